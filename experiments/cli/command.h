@@ -1,0 +1,24 @@
+// The `rearm` command line: one subcommand per source file, each registered here.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace rearm::cli {
+
+struct Command {
+  const char* name;
+  const char* summary;
+  // Runs with the arguments after the subcommand name; returns the process exit code.
+  int (*run)(const std::vector<std::string>& args);
+};
+
+int run_translate(const std::vector<std::string>& args);
+
+// Exit codes: 0 success, 1 a clean failure of the requested work (e.g. budget exceeded),
+// 2 bad usage or bad input.
+inline constexpr int kExitOk = 0;
+inline constexpr int kExitFailure = 1;
+inline constexpr int kExitUsage = 2;
+
+}  // namespace rearm::cli

@@ -1,0 +1,38 @@
+#!/usr/bin/env bash
+# Installs every Debian 12 package rearm needs, and only those that are missing.
+# Runs `apt-get update` first whenever something is missing. Safe to run repeatedly.
+set -euo pipefail
+
+PACKAGES=(
+  # toolchain
+  build-essential cmake git python3 pkg-config ca-certificates
+  # libraries (design card)
+  libeigen3-dev libcgal-dev libgmp-dev libmpfr-dev libbox2d-dev libompl-dev
+  libboost-filesystem-dev libboost-serialization-dev libboost-system-dev
+  libtbb-dev libbenchmark-dev libgtest-dev libgmock-dev libyaml-cpp-dev
+  # independent LTL translator used by the tests; plotting
+  spin python3-matplotlib
+)
+
+missing=()
+for p in "${PACKAGES[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "setup: all ${#PACKAGES[@]} packages present"
+  exit 0
+fi
+
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then
+  if command -v sudo >/dev/null 2>&1; then SUDO="sudo"; else
+    echo "setup: need root (or sudo) to install: ${missing[*]}" >&2; exit 1
+  fi
+fi
+echo "setup: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update
+$SUDO apt-get install -y --no-install-recommends "${missing[@]}"
