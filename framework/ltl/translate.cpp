@@ -592,6 +592,13 @@ std::vector<std::uint32_t> bisimulation(const A& alpha, std::uint32_t n,
     std::size_t key;
     Guard guard;
   };
+  // Renumber the initial classes densely: the loop stops when a round adds no class.
+  std::uint32_t old_count = 0;
+  {
+    std::unordered_map<std::uint32_t, std::uint32_t> dense;
+    for (std::uint32_t& c : cls) c = dense.emplace(c, dense.size()).first->second;
+    old_count = static_cast<std::uint32_t>(dense.size());
+  }
   for (;;) {
     std::vector<std::vector<Item>> sigs(n);
     for (std::uint32_t s = 0; s < n; ++s) {
@@ -644,13 +651,12 @@ std::vector<std::uint32_t> bisimulation(const A& alpha, std::uint32_t n,
         reps.push_back(s);
       }
     }
-    std::uint32_t old_count = 0;
-    for (std::uint32_t c : cls) old_count = std::max(old_count, c + 1);
     cls = std::move(next);
     if (k == old_count) {
       num_classes = k;
       return cls;
     }
+    old_count = k;
   }
 }
 
