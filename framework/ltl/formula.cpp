@@ -1,7 +1,6 @@
 #include "ltl/formula.h"
 
 #include <algorithm>
-#include <cctype>
 #include <unordered_set>
 
 #include "core/error.h"
@@ -19,6 +18,10 @@ struct Formula::Node {
 };
 
 namespace {
+
+// ASCII classes (the <cctype> ones depend on the C locale; the parser is ASCII-only).
+bool ascii_alpha(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z'); }
+bool ascii_alnum(char c) { return ascii_alpha(c) || (c >= '0' && c <= '9'); }
 
 std::size_t mix(std::size_t h, std::size_t v) {
   return h ^ (v + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2));
@@ -97,6 +100,9 @@ Formula Formula::ff() {
 }
 Formula Formula::ap(std::string name) {
   if (name.empty()) throw Error("ltl: empty atomic proposition name");
+  if (name.find('"') != std::string::npos) {
+    throw Error("ltl: atomic proposition names cannot contain '\"'");
+  }
   auto n = std::make_shared<Node>();
   n->op = Op::Ap;
   n->hash = mix(std::hash<std::string>()(name), 0x51ed27);
@@ -212,12 +218,12 @@ int precedence(Op op) {
 
 bool needs_quotes(const std::string& name) {
   if (is_action_predicate(name)) return false;
-  if (!(std::isalpha(static_cast<unsigned char>(name[0])) || name[0] == '_')) return true;
+  if (!(ascii_alpha(name[0]) || name[0] == '_')) return true;
   for (char c : name) {
-    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_')) return true;
+    if (!(ascii_alnum(c) || c == '_')) return true;
   }
   static const std::unordered_set<std::string> reserved = {
-      "true", "false", "X", "F", "G", "U", "R", "W", "M", "V", "xor", "TRUE", "FALSE"};
+      "true", "false", "X", "F", "G", "U", "R", "W", "M", "V", "xor"};
   if (reserved.count(name)) return true;
   // Identifiers starting with F, G or X then a lower-case letter or digit would split
   // into operators (see parser.h).
@@ -338,9 +344,9 @@ std::string Formula::to_string(Syntax syntax) const {
 
 bool is_action_predicate(const std::string& n) {
   auto ident = [](const std::string& s) {
-    if (s.empty() || !(std::isalpha(static_cast<unsigned char>(s[0])) || s[0] == '_')) return false;
+    if (s.empty() || !(ascii_alpha(s[0]) || s[0] == '_')) return false;
     for (char c : s)
-      if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_')) return false;
+      if (!(ascii_alnum(c) || c == '_')) return false;
     return true;
   };
   const auto open = n.find('(');

@@ -150,30 +150,44 @@ struct Trans {
 // transitions with equal successors and marks.
 template <class A>
 void simplify_transitions(const A& alpha, std::vector<Trans<A>>& ts) {
-  // Merge equal (succ, marks).
+  if (ts.size() < 2) return;
+  // Merge equal (succ, marks): sort by a key, or adjacent equals.
+  auto less = [](const Trans<A>& a, const Trans<A>& b) {
+    if (a.sig != b.sig) return a.sig < b.sig;
+    if (a.succ != b.succ) return a.succ < b.succ;
+    return a.marks.w < b.marks.w;
+  };
+  std::sort(ts.begin(), ts.end(), less);
+  std::size_t k = 0;
   for (std::size_t i = 0; i < ts.size(); ++i) {
-    for (std::size_t j = i + 1; j < ts.size();) {
-      if (ts[i].sig == ts[j].sig && ts[i].succ == ts[j].succ && ts[i].marks == ts[j].marks) {
-        ts[i].guard = alpha.disj(ts[i].guard, ts[j].guard);
-        if (j + 1 != ts.size()) ts[j] = std::move(ts.back());
-        ts.pop_back();
-      } else {
-        ++j;
+    if (k > 0 && ts[k - 1].sig == ts[i].sig && ts[k - 1].succ == ts[i].succ &&
+        ts[k - 1].marks == ts[i].marks) {
+      ts[k - 1].guard = alpha.disj(ts[k - 1].guard, ts[i].guard);
+    } else {
+      if (k != i) ts[k] = std::move(ts[i]);
+      ++k;
+    }
+  }
+  ts.resize(k);
+  // Dominance: a dominator has a successor set no larger than the dominated one.
+  std::stable_sort(ts.begin(), ts.end(), [](const Trans<A>& a, const Trans<A>& b) {
+    return a.succ.size() < b.succ.size();
+  });
+  std::vector<char> dead(ts.size(), 0);
+  for (std::size_t i = 0; i < ts.size(); ++i) {
+    const Trans<A>& a = ts[i];  // candidate to drop
+    for (std::size_t j = 0; j < ts.size() && ts[j].succ.size() <= a.succ.size(); ++j) {
+      if (i == j || dead[j]) continue;
+      const Trans<A>& b = ts[j];  // dominating?
+      if ((b.sig & ~a.sig) != 0) continue;
+      if (!includes(a.succ, b.succ) || !a.marks.subset_of(b.marks)) continue;
+      if (alpha.implies(a.guard, b.guard)) {
+        dead[i] = 1;
+        break;
       }
     }
   }
-  std::vector<bool> dead(ts.size(), false);
-  for (std::size_t i = 0; i < ts.size(); ++i) {
-    for (std::size_t j = 0; j < ts.size() && !dead[i]; ++j) {
-      if (i == j || dead[j]) continue;
-      const Trans<A>& a = ts[i];  // candidate to drop
-      const Trans<A>& b = ts[j];  // dominating?
-      if ((b.sig & ~a.sig) != 0 || b.succ.size() > a.succ.size()) continue;
-      if (!includes(a.succ, b.succ) || !a.marks.subset_of(b.marks)) continue;
-      if (alpha.implies(a.guard, b.guard)) dead[i] = true;
-    }
-  }
-  std::size_t k = 0;
+  k = 0;
   for (std::size_t i = 0; i < ts.size(); ++i) {
     if (dead[i]) continue;
     if (k != i) ts[k] = std::move(ts[i]);
@@ -182,9 +196,35 @@ void simplify_transitions(const A& alpha, std::vector<Trans<A>>& ts) {
   ts.resize(k);
 }
 
+// Adds t to a simplified list, keeping it simplified in O(|ts|).
+template <class A>
+void add_transition(const A& alpha, std::vector<Trans<A>>& ts, Trans<A> t) {
+  for (const Trans<A>& b : ts) {
+    if ((b.sig & ~t.sig) == 0 && includes(t.succ, b.succ) && t.marks.subset_of(b.marks) &&
+        alpha.implies(t.guard, b.guard)) {
+      return;  // dominated (or equal)
+    }
+  }
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < ts.size(); ++i) {
+    const Trans<A>& a = ts[i];
+    const bool dominated = (t.sig & ~a.sig) == 0 && includes(a.succ, t.succ) &&
+                           a.marks.subset_of(t.marks) && alpha.implies(a.guard, t.guard);
+    if (dominated) continue;
+    if (k != i) ts[k] = std::move(ts[i]);
+    ++k;
+  }
+  ts.resize(k);
+  ts.push_back(std::move(t));
+}
+
 template <class A>
 std::vector<Trans<A>> product(const A& alpha, const std::vector<Trans<A>>& x,
                               const std::vector<Trans<A>>& y) {
+  if (x.size() == 1 && x[0].succ.empty() && x[0].marks.w.empty() &&
+      alpha.implies(alpha.top(), x[0].guard)) {
+    return y;  // (t, {}) is the unit of the product; y is already simplified
+  }
   std::vector<Trans<A>> out;
   out.reserve(x.size() * y.size());
   for (const Trans<A>& a : x) {
@@ -253,7 +293,11 @@ class Vwaa {
         ts.push_back(std::move(u));
       }
       ts.push_back(Trans<A>{alpha_.top(), StateSet{s}, {}, signature(StateSet{s})});
+      simplify_transitions(alpha_, ts);
     } else {
+      // δ(f) is simplified; marking the transitions that leave f cannot make one dominate
+      // another (a dominator already had a smaller successor set, so it leaves f if the
+      // dominated one does).
       ts = delta(f);
       if (acc_of_[s] >= 0) {  // U/F state: marked when it is left
         for (Trans<A>& t : ts) {
@@ -261,7 +305,6 @@ class Vwaa {
         }
       }
     }
-    simplify_transitions(alpha_, ts);
     state_trans_[s] = std::move(ts);
     state_done_[s] = true;
     return state_trans_[s];
@@ -361,8 +404,7 @@ class Vwaa {
       case Op::Eventually: {  // δ(a) ∪ {(t, {F a})}
         const std::uint32_t self = state(f);
         ts = delta(c[0]);
-        ts.push_back(make(alpha_.top(), StateSet{self}));
-        simplify_transitions(alpha_, ts);
+        add_transition(alpha_, ts, make(alpha_.top(), StateSet{self}));
         break;
       }
       case Op::Release: {  // δ(b) ⊗ (δ(a) ∪ {(t, {a R b})})
@@ -604,17 +646,23 @@ std::vector<std::uint32_t> bisimulation(const A& alpha, std::uint32_t n,
     for (std::uint32_t s = 0; s < n; ++s) {
       std::vector<Item>& items = sigs[s];
       edges(s, [&](std::uint32_t dst, const Guard& g, std::size_t key) {
-        for (Item& it : items) {
-          if (it.dst_class == cls[dst] && it.key == key) {
-            it.guard = alpha.disj(it.guard, g);
-            return;
-          }
-        }
         items.push_back(Item{cls[dst], key, g});
       });
       std::sort(items.begin(), items.end(), [](const Item& a, const Item& b) {
         return a.dst_class != b.dst_class ? a.dst_class < b.dst_class : a.key < b.key;
       });
+      // Or the guards of items with the same (class, key).
+      std::size_t k = 0;
+      for (std::size_t i = 0; i < items.size(); ++i) {
+        if (k > 0 && items[k - 1].dst_class == items[i].dst_class &&
+            items[k - 1].key == items[i].key) {
+          items[k - 1].guard = alpha.disj(items[k - 1].guard, items[i].guard);
+        } else {
+          if (k != i) items[k] = std::move(items[i]);
+          ++k;
+        }
+      }
+      items.resize(k);
     }
     auto same = [&](std::uint32_t a, std::uint32_t b) {
       if (cls[a] != cls[b] || sigs[a].size() != sigs[b].size()) return false;
