@@ -1230,6 +1230,7 @@ class NeverReader {
  private:
   struct Option {
     bool accept_jump = false;  // atomic { (g) -> assert(!(g)) }
+    bool stay = false;         // a bare guard in a do-loop: stays in the state on g
     Ref guard = BddManager::kTrue;
     std::string target;
     int line = 0;
@@ -1319,7 +1320,7 @@ class NeverReader {
                "expected '::' or '" + close + "', found " + describe(peek()));
         }
         next();
-        s->options.push_back(parse_option());
+        s->options.push_back(parse_option(close == "od"));
       }
       if (s->options.empty()) fail(kNeverReader, line, "'" + t.text + "' without options");
       next();
@@ -1345,7 +1346,11 @@ class NeverReader {
     }
   }
 
-  Option parse_option() {
+  // in_do: the option belongs to a do-loop. A bare guard (no "-> goto", as spin prints
+  // `do :: false od` for an empty language) repeats the loop, i.e. stays in the state; in
+  // an if-block it would fall through to the next statement, which spin never prints and
+  // which is only accepted when the guard is false (the option can never run).
+  Option parse_option(bool in_do) {
     Option o;
     o.line = peek().line;
     if (at_ident("atomic")) {
@@ -1373,6 +1378,14 @@ class NeverReader {
     }
     if (!at_ident("goto")) {
       o.guard = parse_guard();
+      if (at_punct("::") || at_ident("od") || at_ident("fi")) {
+        if (!in_do && o.guard != BddManager::kFalse) {
+          fail(kNeverReader, o.line,
+               "unsupported option: a guard without 'goto' inside 'if' (falls through)");
+        }
+        o.stay = true;
+        return o;
+      }
       if (!at_punct("->") && !at_punct(";")) {
         fail(kNeverReader, peek().line, "expected '->' after the guard, found " + describe(peek()));
       }
@@ -1509,8 +1522,9 @@ class NeverReader {
       switch (s.kind) {
         case RawState::Kind::kChoice:
           for (const Option& o : s.options) {
-            const std::uint32_t dst =
-                o.accept_jump ? accept_sink() : index[resolve(o.target, o.line)];
+            const std::uint32_t dst = o.stay          ? q
+                                      : o.accept_jump ? accept_sink()
+                                                      : index[resolve(o.target, o.line)];
             a.add_edge(q, dst, o.guard);
           }
           break;

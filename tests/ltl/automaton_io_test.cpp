@@ -736,6 +736,28 @@ TEST(NeverClaimReader, SpinQuirksGiveTheExpectedStructure) {
   // false: the only edge has guard false, so none remains.
   const GeneralNba f = read_never_claim(read_text(spin_path(6)));
   EXPECT_TRUE(f.out[0].empty());
+  // An unsatisfiable formula: spin prints `do :: false od`, a bare guard with no goto.
+  const GeneralNba e = read_never_claim(read_text(spin_path(15)));
+  ASSERT_EQ(e.num_states(), 1u);
+  EXPECT_TRUE(e.out[0].empty());
+}
+
+TEST(NeverClaimReader, BareGuardInADoLoopStaysInTheState) {
+  const GeneralNba a = read_never_claim(
+      "never {\naccept_init:\n\tdo\n\t:: (p)\n\t:: (q) -> goto T0_S1\n\tod;\n"
+      "T0_S1:\n\tdo\n\t:: (1) -> goto T0_S1\n\tod;\n}\n");
+  ASSERT_EQ(a.num_states(), 2u);
+  ASSERT_EQ(a.out[0].size(), 2u);
+  const int p = a.alphabet.find_ap("p");
+  ASSERT_GE(p, 0);
+  bool self_loop_on_p = false;
+  for (const auto& e : a.out[0]) {
+    if (e.dst == 0) self_loop_on_p = e.guard == a.alphabet.ap(static_cast<std::uint32_t>(p), true);
+  }
+  EXPECT_TRUE(self_loop_on_p);
+  // In an if-block a bare guard would fall through: only `false` is accepted there.
+  EXPECT_THROW(read_never_claim("never {\nT0_init:\n\tif\n\t:: (p)\n\tfi;\n}\n"), rearm::Error);
+  EXPECT_NO_THROW(read_never_claim("never {\nT0_init:\n\tif\n\t:: false\n\tfi;\n}\n"));
 }
 
 bool spin_available() { return std::system("command -v spin >/dev/null 2>&1") == 0; }
