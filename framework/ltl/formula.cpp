@@ -188,34 +188,6 @@ std::vector<std::string> Formula::atomic_propositions() const {
 
 namespace {
 
-// Binding strength, higher binds tighter (Spot's table: -> <-> lowest, then |, xor, &,
-// then U R W M, then the unary operators).
-int precedence(Op op) {
-  switch (op) {
-    case Op::Implies:
-    case Op::Equiv:
-      return 1;
-    case Op::Or:
-      return 2;
-    case Op::Xor:
-      return 3;
-    case Op::And:
-      return 4;
-    case Op::Until:
-    case Op::Release:
-    case Op::WeakUntil:
-    case Op::StrongRelease:
-      return 5;
-    case Op::Not:
-    case Op::Next:
-    case Op::Eventually:
-    case Op::Always:
-      return 6;
-    default:
-      return 7;
-  }
-}
-
 bool needs_quotes(const std::string& name) {
   if (is_action_predicate(name)) return false;
   if (!(ascii_alpha(name[0]) || name[0] == '_')) return true;
@@ -340,6 +312,32 @@ std::string Formula::to_string(Syntax syntax) const {
   std::string out;
   print(*this, syntax, out);
   return out;
+}
+
+int precedence(Op op) {
+  switch (op) {
+    case Op::Implies:
+    case Op::Equiv:
+      return 1;
+    case Op::Or:
+      return 2;
+    case Op::Xor:
+      return 3;
+    case Op::And:
+      return 4;
+    case Op::Until:
+    case Op::Release:
+    case Op::WeakUntil:
+    case Op::StrongRelease:
+      return 5;
+    case Op::Not:
+    case Op::Next:
+    case Op::Eventually:
+    case Op::Always:
+      return 6;
+    default:
+      return 7;
+  }
 }
 
 bool is_action_predicate(const std::string& n) {

@@ -105,6 +105,10 @@ struct FormulaHash {
   std::size_t operator()(const Formula& f) const { return f.hash(); }
 };
 
+// Binding strength in Spot's precedence, shared by the parser and the printer (higher binds
+// tighter): 1 -> <->, 2 |, 3 xor, 4 &, 5 U R W M, 6 ! X F G, 7 leaves.
+int precedence(Op op);
+
 // True for action-predicate names: move(x), grasp(x), release(x,y).
 bool is_action_predicate(const std::string& ap_name);
 

@@ -62,36 +62,11 @@ constexpr std::size_t kMaxFoundBytes = 32;
 constexpr const char* kEndOfInput = "end of input";
 constexpr const char* kExpectedFormula = "a formula";
 
-// Binding strength, loosest first (Spot's table, as formula.cpp prints it).
-constexpr int kImpliesPrecedence = 1;   // -> <-> (right-assoc)
-constexpr int kOrPrecedence = 2;        // | (n-ary)
-constexpr int kXorPrecedence = 3;       // xor (left-assoc)
-constexpr int kAndPrecedence = 4;       // & (n-ary)
-constexpr int kTemporalPrecedence = 5;  // U R V W M (right-assoc)
-constexpr int kUnaryPrecedence = 6;     // ! X F G
+// Binding strengths come from ltl::precedence (formula.h), shared with the printer:
+// -> <-> right-assoc, | n-ary, xor left-assoc, & n-ary, U R V W M right-assoc, then unary.
+const int kUnaryPrecedence = precedence(Op::Not);
 
 enum class Assoc : std::uint8_t { Left, Right, NAry };
-
-int precedence(Op op) {
-  switch (op) {
-    case Op::Implies:
-    case Op::Equiv:
-      return kImpliesPrecedence;
-    case Op::Or:
-      return kOrPrecedence;
-    case Op::Xor:
-      return kXorPrecedence;
-    case Op::And:
-      return kAndPrecedence;
-    case Op::Until:
-    case Op::Release:
-    case Op::WeakUntil:
-    case Op::StrongRelease:
-      return kTemporalPrecedence;
-    default:
-      return kUnaryPrecedence;
-  }
-}
 
 Assoc associativity(Op op) {
   switch (op) {

@@ -23,6 +23,7 @@
 #include "core/rng.h"
 #include "ltl/formula.h"
 #include "support/lasso.h"
+#include "support/nba_oracle.h"
 
 namespace rearm::ltl {
 namespace {
@@ -30,71 +31,7 @@ namespace {
 using test_support::Lasso;
 using Ref = BddManager::Ref;
 
-// ---------------------------------------------------------------------------------------
-// Lasso acceptance (local oracle).
-
-std::vector<bool> symbol_at(const GeneralAlphabet& alphabet, const Lasso& w, std::size_t pos) {
-  std::vector<bool> s(alphabet.aps().size());
-  for (std::size_t i = 0; i < s.size(); ++i) s[i] = w.holds(pos, alphabet.aps()[i]);
-  return s;
-}
-
-std::size_t symbol_at(const ActionAlphabet& alphabet, const Lasso& w, std::size_t pos) {
-  std::size_t letter = 0;
-  for (std::size_t i = 0; i < alphabet.aps().size(); ++i) {
-    if (!w.holds(pos, alphabet.aps()[i])) continue;
-    EXPECT_EQ(letter, 0u) << "two actions at once in " << w.to_string();
-    letter = i + 1;
-  }
-  return letter;
-}
-
-// Whether the automaton has an accepting run on w: in the product of the automaton with the
-// lasso positions, some reachable node with an accepting state lies on a cycle.
-template <class Alphabet>
-bool accepts(const Automaton<Alphabet>& a, const Lasso& w) {
-  const std::size_t n = w.size();
-  const std::size_t nodes = a.num_states() * n;
-  std::vector<typename Alphabet::Symbol> sym;
-  for (std::size_t i = 0; i < n; ++i) sym.push_back(symbol_at(a.alphabet, w, i));
-  auto successors = [&](std::size_t node) {
-    std::vector<std::size_t> out;
-    const std::size_t q = node / n, i = node % n;
-    for (const auto& e : a.out[q]) {
-      if (a.alphabet.contains(e.guard, sym[i])) out.push_back(e.dst * n + w.successor(i));
-    }
-    return out;
-  };
-  auto reach_from = [&](const std::vector<std::size_t>& roots) {
-    std::vector<bool> seen(nodes, false);
-    std::vector<std::size_t> stack;
-    for (const std::size_t r : roots) {
-      if (!seen[r]) {
-        seen[r] = true;
-        stack.push_back(r);
-      }
-    }
-    while (!stack.empty()) {
-      const std::size_t x = stack.back();
-      stack.pop_back();
-      for (const std::size_t y : successors(x)) {
-        if (!seen[y]) {
-          seen[y] = true;
-          stack.push_back(y);
-        }
-      }
-    }
-    return seen;
-  };
-  std::vector<std::size_t> roots;
-  for (const std::uint32_t q : a.initial) roots.push_back(q * n);
-  const std::vector<bool> reachable = reach_from(roots);
-  for (std::size_t x = 0; x < nodes; ++x) {
-    if (!reachable[x] || !a.accepting[x / n]) continue;
-    if (reach_from(successors(x))[x]) return true;
-  }
-  return false;
-}
+using test_support::accepts;  // lasso acceptance oracle (support/nba_oracle.h)
 
 // ---------------------------------------------------------------------------------------
 // Helpers.
@@ -106,22 +43,10 @@ Lasso word(const std::vector<std::vector<std::string>>& u,
 }
 
 Lasso random_word(Rng& rng, const std::vector<std::string>& aps, bool one_hot) {
-  Lasso w;
-  w.aps = aps;
-  const auto letter = [&]() {
-    Lasso::Letter l(aps.size(), false);
-    if (one_hot) {
-      const std::size_t k = rng.index(aps.size() + 1);
-      if (k > 0) l[k - 1] = true;
-    } else {
-      for (std::size_t i = 0; i < aps.size(); ++i) l[i] = rng.bernoulli(0.5);
-    }
-    return l;
-  };
-  const std::size_t nu = rng.index(4), nv = 1 + rng.index(4);
-  for (std::size_t i = 0; i < nu; ++i) w.prefix.push_back(letter());
-  for (std::size_t i = 0; i < nv; ++i) w.loop.push_back(letter());
-  return w;
+  test_support::LassoOptions o;
+  o.max_prefix = 3;
+  o.one_hot = one_hot;
+  return test_support::random_lasso(rng, aps, o);
 }
 
 // Same word with the propositions renamed (position i of aps to names[i]).
