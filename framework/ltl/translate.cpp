@@ -262,6 +262,7 @@ class Vwaa {
             for (const StateSet& b : dnf(c)) next.push_back(set_union(a, b));
           }
           acc = minimal(std::move(next));
+          clock_.check("the initial state sets", acc.size());
         }
         return acc;
       }

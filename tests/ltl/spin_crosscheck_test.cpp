@@ -29,7 +29,9 @@ namespace {
 using ltl::Formula;
 
 // Number of random formulas of the exact cross-check (each costs two spin runs).
-constexpr std::size_t kNumFormulas = 320;
+constexpr std::size_t kNumFormulas = 340;
+// The acceptance figure: formulas whose both directions (φ and ¬φ) were checked exactly.
+constexpr std::size_t kMinBothDirections = 300;
 // Largest tolerated share of spin runs that hit the wall-clock bound.
 constexpr double kMaxTimeoutShare = 0.10;
 // Words sampled from spin's automaton for the formula we translate (ours must accept them).
@@ -103,6 +105,7 @@ TEST(SpinCrosscheck, OurAutomataAndSpinsHaveNoCommonWordWithTheNegation) {
   std::size_t timeouts = 0, spin_failures = 0, reader_errors = 0, checks = 0;
   std::size_t ours_wrong = 0, spin_wrong = 0, guided_checks = 0;
   const std::size_t calls = runs.size();
+  std::vector<char> checked(jobs.size(), 0);
   for (std::size_t k = 0; k < jobs.size(); ++k) {
     const auto& [ours_f, spin_f] = jobs[k];
     const SpinRun& run = runs[k];
@@ -128,6 +131,7 @@ TEST(SpinCrosscheck, OurAutomataAndSpinsHaveNoCommonWordWithTheNegation) {
       continue;
     }
     ++checks;
+    checked[k] = 1;
     const auto wit = find_common_word(ours, theirs);
     if (wit) {
       // A word both accept: the evaluator says which automaton is wrong.
@@ -172,9 +176,12 @@ TEST(SpinCrosscheck, OurAutomataAndSpinsHaveNoCommonWordWithTheNegation) {
       }
     }
   }
+  std::size_t both_directions = 0;
+  for (std::size_t i = 0; i < kNumFormulas; ++i) both_directions += checked[2 * i] && checked[2 * i + 1];
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::cout << "[spin_crosscheck] " << kNumFormulas << " formulas, " << calls << " spin calls, "
+  std::cout << "[spin_crosscheck] " << kNumFormulas << " formulas (" << both_directions
+            << " checked in both directions), " << calls << " spin calls, "
             << timeouts << " timed out (skipped, bound " << kSpinTimeoutSeconds << " s), "
             << spin_failures << " spin failures, " << reader_errors << " reader errors, " << checks
             << " exact product checks, " << guided_checks
@@ -183,6 +190,7 @@ TEST(SpinCrosscheck, OurAutomataAndSpinsHaveNoCommonWordWithTheNegation) {
             << spin_seconds << " s, total " << seconds << " s\n";
   EXPECT_EQ(ours_wrong, 0u);
   EXPECT_EQ(spin_wrong, 0u);
+  EXPECT_GE(both_directions, kMinBothDirections);
   EXPECT_EQ(spin_failures, 0u);
   EXPECT_EQ(reader_errors, 0u);
   EXPECT_LE(static_cast<double>(timeouts), kMaxTimeoutShare * static_cast<double>(calls))
