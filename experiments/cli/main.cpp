@@ -11,8 +11,7 @@ namespace {
 using rearm::cli::Command;
 
 const Command kCommands[] = {
-    {"translate", "translate an LTL formula into a Büchi automaton",
-     &rearm::cli::run_translate},
+    {"translate", "translate an LTL formula into a Büchi automaton", &rearm::cli::run_translate},
 };
 
 void print_help() {

@@ -29,8 +29,8 @@ namespace detail {
 
 }  // namespace rearm
 
-#define REARM_DEMAND(cond, msg)                                              \
-  do {                                                                       \
+#define REARM_DEMAND(cond, msg)                                                    \
+  do {                                                                             \
     if (!(cond)) ::rearm::detail::demand_failed(#cond, __FILE__, __LINE__, (msg)); \
   } while (false)
 

@@ -29,8 +29,7 @@ class GeneralAlphabet {
   using Symbol = std::vector<bool>;  // symbol[i]: aps[i] holds
 
   GeneralAlphabet();  // fresh manager, no propositions
-  explicit GeneralAlphabet(std::vector<std::string> aps,
-                           std::shared_ptr<BddManager> bdd = nullptr);
+  explicit GeneralAlphabet(std::vector<std::string> aps, std::shared_ptr<BddManager> bdd = nullptr);
 
   const std::vector<std::string>& aps() const { return aps_; }
   // Index of a proposition, adding it (and a BDD variable) when absent.

@@ -21,9 +21,9 @@ struct Automaton {
 
   Alphabet alphabet;
   std::vector<std::uint32_t> initial;
-  std::vector<bool> accepting;              // per state
-  std::vector<std::vector<Edge>> out;       // per state, at most one edge per destination
-  std::vector<std::string> state_names;     // optional (empty or one per state)
+  std::vector<bool> accepting;           // per state
+  std::vector<std::vector<Edge>> out;    // per state, at most one edge per destination
+  std::vector<std::string> state_names;  // optional (empty or one per state)
 
   std::uint32_t num_states() const { return static_cast<std::uint32_t>(out.size()); }
   std::uint32_t add_state(bool is_accepting = false) {

@@ -145,9 +145,8 @@ bool Formula::has_next() const { return node_->has_next; }
 
 bool Formula::operator==(const Formula& o) const {
   if (node_ == o.node_) return true;
-  if (node_->hash != o.node_->hash || node_->op != o.node_->op ||
-      node_->size != o.node_->size || node_->name != o.node_->name ||
-      node_->children.size() != o.node_->children.size()) {
+  if (node_->hash != o.node_->hash || node_->op != o.node_->op || node_->size != o.node_->size ||
+      node_->name != o.node_->name || node_->children.size() != o.node_->children.size()) {
     return false;
   }
   for (std::size_t i = 0; i < node_->children.size(); ++i) {
@@ -165,7 +164,8 @@ bool Formula::operator<(const Formula& o) const {
     return node_->children.size() < o.node_->children.size();
   }
   for (std::size_t i = 0; i < node_->children.size(); ++i) {
-    if (node_->children[i] != o.node_->children[i]) return node_->children[i] < o.node_->children[i];
+    if (node_->children[i] != o.node_->children[i])
+      return node_->children[i] < o.node_->children[i];
   }
   return false;
 }
@@ -194,8 +194,8 @@ bool needs_quotes(const std::string& name) {
   for (char c : name) {
     if (!(ascii_alnum(c) || c == '_')) return true;
   }
-  static const std::unordered_set<std::string> reserved = {
-      "true", "false", "X", "F", "G", "U", "R", "W", "M", "V", "xor"};
+  static const std::unordered_set<std::string> reserved = {"true", "false", "X", "F", "G",  "U",
+                                                           "R",    "W",     "M", "V", "xor"};
   if (reserved.count(name)) return true;
   // Identifiers starting with F, G or X then a lower-case letter or digit would split
   // into operators (see parser.h).

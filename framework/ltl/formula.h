@@ -18,19 +18,19 @@ namespace rearm::ltl {
 enum class Op : std::uint8_t {
   True,
   False,
-  Ap,        // atomic proposition
+  Ap,  // atomic proposition
   Not,
-  And,       // n-ary (>= 2 children)
-  Or,        // n-ary (>= 2 children)
-  Implies,   // a -> b
-  Equiv,     // a <-> b
-  Xor,       // a xor b
-  Next,      // X a
-  Eventually,  // F a  (<> a)
-  Always,      // G a  ([] a)
-  Until,       // a U b
-  Release,     // a R b  (a V b)
-  WeakUntil,   // a W b
+  And,            // n-ary (>= 2 children)
+  Or,             // n-ary (>= 2 children)
+  Implies,        // a -> b
+  Equiv,          // a <-> b
+  Xor,            // a xor b
+  Next,           // X a
+  Eventually,     // F a  (<> a)
+  Always,         // G a  ([] a)
+  Until,          // a U b
+  Release,        // a R b  (a V b)
+  WeakUntil,      // a W b
   StrongRelease,  // a M b
 };
 

@@ -13,7 +13,8 @@
 // Identifiers are [A-Za-z_][A-Za-z0-9_]*. As in Spot, an identifier made of a run of the
 // unary operator letters F, G, X, alone or followed by a lower-case letter, is split into
 // operators (`GFa` and `GF(a)` are G F a; `F1`, `FGA` are propositions); the single letters
-// U R V W M X F G and `true`/`false` are keywords. Action predicates are stored in canonical spelling without spaces.
+// U R V W M X F G and `true`/`false` are keywords. Action predicates are stored in canonical
+// spelling without spaces.
 #pragma once
 
 #include <cstddef>

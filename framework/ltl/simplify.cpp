@@ -158,10 +158,14 @@ F mk_or(std::vector<F> in) {
       rest.push_back(single(group[0]));
     }
   };
-  fold(evs, [](const F& a) { return mk_eventually(a); }, [](const F& a) { return F::eventually(a); });
-  fold(nexts, [](const F& a) { return mk_next(a); }, [](const F& a) { return F::next(a); });
-  fold(gfs, [](const F& a) { return mk_always(mk_eventually(a)); },
-       [](const F& a) { return F::always(F::eventually(a)); });
+  fold(
+      evs, [](const F& a) { return mk_eventually(a); },
+      [](const F& a) { return F::eventually(a); });
+  fold(
+      nexts, [](const F& a) { return mk_next(a); }, [](const F& a) { return F::next(a); });
+  fold(
+      gfs, [](const F& a) { return mk_always(mk_eventually(a)); },
+      [](const F& a) { return F::always(F::eventually(a)); });
   if (changed) {
     std::vector<F> again;
     if (!collect(Op::Or, rest, again)) return F::tt();
@@ -190,7 +194,7 @@ void split_suspendable(const F& f, Op op, std::vector<F>& susp, std::vector<F>& 
 
 F mk_eventually(const F& a) {
   if (a.op() == Op::True || a.op() == Op::False) return a;
-  if (is_eventual(a)) return a;                       // F e == e (includes F F a == F a)
+  if (is_eventual(a)) return a;                               // F e == e (includes F F a == F a)
   if (a.op() == Op::Until) return mk_eventually(a.child(1));  // F(a U b) == F b
   if (a.op() == Op::Next) return mk_next(mk_eventually(a.child(0)));  // F X a == X F a
   if (a.op() == Op::Or) {
@@ -249,7 +253,7 @@ F mk_always_eventually(const F& a) {
 
 F mk_always(const F& a) {
   if (a.op() == Op::True || a.op() == Op::False) return a;
-  if (is_universal(a)) return a;  // G u == u (includes G G a == G a)
+  if (is_universal(a)) return a;                            // G u == u (includes G G a == G a)
   if (a.op() == Op::Release) return mk_always(a.child(1));  // G(a R b) == G b
   if (a.op() == Op::Next) return mk_next(mk_always(a.child(0)));  // G X a == X G a
   if (a.op() == Op::Eventually) return mk_always_eventually(a.child(0));

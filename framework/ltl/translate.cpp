@@ -126,8 +126,8 @@ class Clock {
     }
     if ((++ticks_ & 255u) == 0 && ms() > options_.max_seconds * 1000.0) {
       throw BudgetExceeded(std::string("ltl translation: ") + stage +
-                           " exceeds the time budget of " +
-                           std::to_string(options_.max_seconds) + " s");
+                           " exceeds the time budget of " + std::to_string(options_.max_seconds) +
+                           " s");
     }
   }
 
@@ -758,7 +758,8 @@ Automaton<A> degeneralize(const A& alpha, const Tgba<A>& g, Clock& clock) {
   const std::uint32_t n = static_cast<std::uint32_t>(g.out.size());
   const std::size_t k = g.num_acc;
   std::uint32_t count = 0;
-  const auto comp = sccs(g.out, [](const auto& e) { return e.dst; }, count);
+  const auto comp = sccs(
+      g.out, [](const auto& e) { return e.dst; }, count);
   // An SCC can be accepting only if its inner edges carry every mark.
   std::vector<Marks> seen(count);
   std::vector<bool> cyclic(count, false);

@@ -2,11 +2,11 @@
 // messages for bad input. The HOA output is read back and checked against the formula's
 // semantics with the independent lasso evaluator.
 #include <gtest/gtest.h>
+#include <sys/wait.h>
 
 #include <array>
 #include <cstdio>
 #include <string>
-#include <sys/wait.h>
 
 #include "ltl/automaton_io.h"
 #include "ltl/parser.h"
@@ -92,8 +92,8 @@ TEST(CliTest, BadInputGivesAClearErrorAndExitCode) {
   EXPECT_TRUE(contains(missing.out, "missing FORMULA")) << missing.out;
   const Result number = run("translate --max-states nan 'F p'");
   EXPECT_EQ(number.code, 2);
-  const Result budget = run(
-      "translate --max-states 100 'F p1 & F p2 & F p3 & F p4 & F p5 & F p6 & F p7 & F p8'");
+  const Result budget =
+      run("translate --max-states 100 'F p1 & F p2 & F p3 & F p4 & F p5 & F p6 & F p7 & F p8'");
   EXPECT_EQ(budget.code, 1);
   EXPECT_TRUE(contains(budget.out, "budget")) << budget.out;
 }

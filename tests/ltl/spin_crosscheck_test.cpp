@@ -177,13 +177,14 @@ TEST(SpinCrosscheck, OurAutomataAndSpinsHaveNoCommonWordWithTheNegation) {
     }
   }
   std::size_t both_directions = 0;
-  for (std::size_t i = 0; i < kNumFormulas; ++i) both_directions += checked[2 * i] && checked[2 * i + 1];
+  for (std::size_t i = 0; i < kNumFormulas; ++i)
+    both_directions += checked[2 * i] && checked[2 * i + 1];
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::cout << "[spin_crosscheck] " << kNumFormulas << " formulas (" << both_directions
-            << " checked in both directions), " << calls << " spin calls, "
-            << timeouts << " timed out (skipped, bound " << kSpinTimeoutSeconds << " s), "
-            << spin_failures << " spin failures, " << reader_errors << " reader errors, " << checks
+            << " checked in both directions), " << calls << " spin calls, " << timeouts
+            << " timed out (skipped, bound " << kSpinTimeoutSeconds << " s), " << spin_failures
+            << " spin failures, " << reader_errors << " reader errors, " << checks
             << " exact product checks, " << guided_checks
             << " words of spin's automata checked on ours, " << ours_wrong
             << " disagreements blaming ours, " << spin_wrong << " blaming spin/reader; spin "

@@ -17,7 +17,8 @@ namespace {
 
 std::string conj_of(const char* op, int n) {
   std::string s;
-  for (int i = 1; i <= n; ++i) s += (i > 1 ? " & " : "") + std::string(op) + " p" + std::to_string(i);
+  for (int i = 1; i <= n; ++i)
+    s += (i > 1 ? " & " : "") + std::string(op) + " p" + std::to_string(i);
   return s;
 }
 
