@@ -713,16 +713,28 @@ template <class A>
 void merge_tgba_states(const A& alpha, Tgba<A>& g) {
   const std::uint32_t n = static_cast<std::uint32_t>(g.out.size());
   if (n == 0) return;
+  // Mark sets are compared exactly: each distinct set gets a dense id (the bisimulation key).
+  struct MarksHash {
+    std::size_t operator()(const Marks& m) const { return m.hash(); }
+  };
+  std::unordered_map<Marks, std::size_t, MarksHash> mark_ids;
+  std::vector<std::vector<std::size_t>> key(n);
+  for (std::uint32_t s = 0; s < n; ++s) {
+    for (const auto& e : g.out[s])
+      key[s].push_back(mark_ids.emplace(e.marks, mark_ids.size()).first->second);
+  }
   std::uint32_t k = 0;
   const auto cls = bisimulation(
       alpha, n, std::vector<std::uint32_t>(n, 0),
       [&](std::uint32_t s, auto&& emit) {
-        for (const auto& e : g.out[s]) emit(e.dst, e.guard, e.marks.hash());
+        for (std::size_t i = 0; i < g.out[s].size(); ++i) {
+          emit(g.out[s][i].dst, g.out[s][i].guard, key[s][i]);
+        }
       },
       k);
   if (k == n) return;
-  // Marks of equivalent states are equal per (dst class, mark hash); a hash collision
-  // between different marks would merge wrongly, so the merged edges keep their own marks.
+  // Equivalent states have the same guards per (destination class, marks): the merged state
+  // takes the edges of one representative.
   Tgba<A> h;
   h.num_acc = g.num_acc;
   h.out.resize(k);
