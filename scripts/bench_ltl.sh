@@ -19,6 +19,11 @@ OUT="results/$MACHINE"
 cmake -S . -B "$BUILD" -DCMAKE_BUILD_TYPE=Release
 cmake --build "$BUILD" --target translate_bench -j"$(nproc)"
 mkdir -p "$OUT"
+# The revision measured: taken before this script writes its own results.
+REV=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
+if [ -n "$(git status --porcelain -- . ':!results' 2>/dev/null)" ]; then
+  REV="$REV + uncommitted changes"
+fi
 LOAD=$(cut -d" " -f1-3 /proc/loadavg)  # 1, 5, 15 min, as the benchmark starts
 "$BUILD/bin/translate_bench" --benchmark_out="$OUT/ltl_translate.json" \
   --benchmark_out_format=json "$@"
@@ -26,8 +31,6 @@ LOAD=$(cut -d" " -f1-3 /proc/loadavg)  # 1, 5, 15 min, as the benchmark starts
 SPIN_DIR=$(mktemp -d)  # spin may write files into its working directory
 trap 'rm -rf "$SPIN_DIR"' EXIT
 CPU=$(grep -m1 '^model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ *//')
-REV=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
-if [ -n "$(git status --porcelain 2>/dev/null)" ]; then REV="$REV + uncommitted changes"; fi
 
 python3 - "$BUILD/bin/translate_bench" "$OUT" "$SPIN_DIR" "$MACHINE" "$(nproc)" "$CPU" "$REV" \
   "$LOAD" <<'PYTHON'
