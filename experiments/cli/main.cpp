@@ -12,6 +12,7 @@ using rearm::cli::Command;
 
 const Command kCommands[] = {
     {"translate", "translate an LTL formula into a Büchi automaton", &rearm::cli::run_translate},
+    {"plan", "run the mission controller against a perfect executor", &rearm::cli::run_plan},
 };
 
 void print_help() {

@@ -1,0 +1,213 @@
+#include "symbolic/mission_controller.h"
+
+#include <algorithm>
+#include <unordered_set>
+
+#include "core/error.h"
+
+namespace rearm::symbolic {
+namespace {
+
+bool is_temporal(ltl::Op op) {
+  using ltl::Op;
+  return op == Op::Next || op == Op::Eventually || op == Op::Always || op == Op::Until ||
+         op == Op::Release || op == Op::WeakUntil || op == Op::StrongRelease;
+}
+
+// Walks f with the polarity of each occurrence (negative under an odd number of
+// negations; both under <-> and xor) and rejects X and negated temporal subformulas.
+void check_polarity(const ltl::Formula& f, bool negative, bool both) {
+  using ltl::Op;
+  if (f.op() == Op::Next) {
+    throw Error(
+        "X (next) is not allowed in a mission formula: the controller needs a "
+        "stutter-invariant formula (paper Section II-B), found '" +
+        f.to_string() + "'");
+  }
+  if ((negative || both) && is_temporal(f.op())) {
+    throw Error("negation over the temporal subformula '" + f.to_string() +
+                "' is not allowed in a mission formula: the paper's fragment has no "
+                "negation (Section II-B); negation may only apply to Boolean combinations "
+                "of action predicates");
+  }
+  switch (f.op()) {
+    case Op::Not:
+      check_polarity(f.child(0), !negative, both);
+      return;
+    case Op::Implies:
+      check_polarity(f.child(0), !negative, both);
+      check_polarity(f.child(1), negative, both);
+      return;
+    case Op::Equiv:
+    case Op::Xor:
+      check_polarity(f.child(0), negative, true);
+      check_polarity(f.child(1), negative, true);
+      return;
+    default:
+      for (const ltl::Formula& c : f.children()) check_polarity(c, negative, both);
+  }
+}
+
+}  // namespace
+
+const char* to_string(MissionStatus s) {
+  switch (s) {
+    case MissionStatus::InProgress:
+      return "in progress";
+    case MissionStatus::Accepting:
+      return "accepting";
+    case MissionStatus::Infeasible:
+      return "infeasible";
+  }
+  return "?";
+}
+
+void check_mission_formula(const ltl::Formula& f, const Vocabulary& vocabulary) {
+  check_polarity(f, false, false);
+  for (const std::string& ap : f.atomic_propositions()) {
+    vocabulary.check(Action::parse(ap));  // throws for non-predicates and unknown names
+  }
+}
+
+MissionController::MissionController(const ltl::Formula& formula, MissionOptions options) {
+  check_mission_formula(formula, options.vocabulary);
+  std::vector<std::string> extra;
+  if (options.initial) {
+    options.vocabulary.check(*options.initial);
+    extra.push_back(options.initial->to_string());
+  }
+  nba_ = ltl::translate_actions(formula, options.translate, nullptr, extra);
+  for (const std::string& ap : nba_.alphabet.aps()) actions_.push_back(Action::parse(ap));
+  if (options.initial) {
+    held_ = static_cast<std::size_t>(nba_.alphabet.find_ap(options.initial->to_string())) + 1;
+  }
+  excluded_ = ltl::LetterSet(nba_.alphabet.num_letters());
+  graph_ = std::make_unique<MissionGraph>(nba_, MissionGraph::Start{MissionGraph::kAux, held_},
+                                          excluded_);
+  if (graph_->d_f(node_) == MissionGraph::kInfinity) {
+    set_infeasible(
+        "the formula has no satisfying sequence of actions (no accepting cycle of "
+        "the automaton is reachable one action at a time)");
+  }
+}
+
+std::uint32_t MissionController::automaton_state() const { return graph_->node(node_).state; }
+
+Action MissionController::action_of(std::size_t letter) const {
+  REARM_DEMAND(letter >= 1 && letter <= actions_.size(), "not an action letter");
+  return actions_[letter - 1];
+}
+
+std::vector<Action> MissionController::infeasible_actions() const {
+  std::vector<Action> out;
+  for (std::size_t l = excluded_.next(1); l < excluded_.universe(); l = excluded_.next(l + 1)) {
+    out.push_back(action_of(l));
+  }
+  return out;
+}
+
+void MissionController::set_infeasible(std::string reason) {
+  status_ = MissionStatus::Infeasible;
+  reason_ = std::move(reason);
+  pending_.reset();
+}
+
+// Candidate edges from the current node: accepting edges in a cycle when in V_F, else edges
+// one hop closer to V_F (Eq. 8). Among them, an edge the held letter already drives (no
+// action needed) first, then the lowest feasible action letter; ties by edge order, so the
+// controller is deterministic. With only_same_edge, only other letters of the failed edge.
+std::optional<MissionController::Choice> MissionController::choose(
+    bool only_same_edge, const std::optional<Choice>& failed) const {
+  const auto& out = graph_->out(node_);
+  const std::uint32_t d = graph_->d_f(node_);
+  if (d == MissionGraph::kInfinity) return std::nullopt;
+  const bool in_vf = graph_->in_vf(node_);
+  std::optional<Choice> best;
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    if (only_same_edge && (!failed || i != failed->edge)) continue;
+    if (!only_same_edge && failed && i == failed->edge) continue;
+    const MissionGraph::Edge& e = out[i];
+    const bool candidate = in_vf ? (e.accepting && e.in_cycle) : graph_->d_f(e.dst) + 1 == d;
+    if (!candidate) continue;
+    if (e.letters.test(held_)) return Choice{i, held_};  // nothing to do
+    const ltl::LetterSet usable = e.letters & ~excluded_;
+    const std::size_t letter = usable.next(1);  // an action (letter 0 cannot be performed)
+    if (letter >= usable.universe()) continue;
+    if (!best || letter < best->letter) best = Choice{i, letter};
+  }
+  return best;
+}
+
+std::optional<Action> MissionController::next_action() {
+  if (status_ == MissionStatus::Infeasible) return std::nullopt;
+  if (pending_) return action_of(pending_->letter);
+  // Follow edges that need no action (stuttering) until an action is needed or the mission
+  // idles: a node seen twice in this call means a cycle of no-action edges.
+  std::unordered_set<std::uint32_t> seen;
+  for (;;) {
+    const std::optional<Choice> c = choose(false, std::nullopt);
+    if (!c) {
+      set_infeasible("no accepting cycle is reachable from automaton state " +
+                     graph_->describe(node_) + " without the infeasible actions");
+      return std::nullopt;
+    }
+    const MissionGraph::Edge& e = graph_->out(node_)[c->edge];
+    if (c->letter != held_) {
+      pending_ = c;
+      return action_of(c->letter);
+    }
+    if (e.accepting && e.in_cycle) status_ = MissionStatus::Accepting;
+    if (!seen.insert(node_).second || e.dst == node_) {
+      node_ = e.dst;
+      return std::nullopt;  // idling in an accepting cycle
+    }
+    node_ = e.dst;
+  }
+}
+
+void MissionController::report_success() {
+  if (!pending_) throw Error("report_success: no action is pending (call next_action first)");
+  const MissionGraph::Edge& e = graph_->out(node_)[pending_->edge];
+  if (e.accepting && e.in_cycle) status_ = MissionStatus::Accepting;
+  node_ = e.dst;
+  held_ = pending_->letter;
+  pending_.reset();
+}
+
+void MissionController::report_infeasible(const Action& action) {
+  if (!pending_ || action_of(pending_->letter) != action) {
+    throw Error("report_infeasible: " + action.to_string() +
+                " is not the pending action of the mission controller");
+  }
+  const Choice failed = *pending_;
+  pending_.reset();
+  excluded_.set(failed.letter);
+  // 1. Another symbol of the same edge; 2. another neighbour that lowers d_F (Appendix I-C).
+  if (auto c = choose(true, failed); c && c->letter != held_) {
+    pending_ = c;
+    return;
+  }
+  if (auto c = choose(false, failed); c && c->letter != held_) {
+    pending_ = c;
+    return;
+  }
+  // 3. Beyond the paper: G and d_F without every action known to be infeasible.
+  rebuild();
+}
+
+void MissionController::rebuild() {
+  const std::uint32_t state = graph_->node(node_).state;
+  graph_ = std::make_unique<MissionGraph>(nba_, MissionGraph::Start{state, held_}, excluded_);
+  node_ = graph_->start();
+  ++generation_;
+  status_ = MissionStatus::InProgress;
+  if (graph_->d_f(node_) == MissionGraph::kInfinity) {
+    std::string names;
+    for (const Action& a : infeasible_actions())
+      names += (names.empty() ? "" : ", ") + a.to_string();
+    set_infeasible("no accepting cycle of the automaton is reachable from state " +
+                   graph_->describe(node_) + " without the infeasible actions {" + names + "}");
+  }
+}
+
+}  // namespace rearm::symbolic

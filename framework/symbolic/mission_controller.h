@@ -1,0 +1,99 @@
+// The online symbolic controller of paper Section III and Appendix I-C: from the current
+// node of G it picks a neighbour one hop closer to V_F (Eq. 8), or an accepting edge when in
+// V_F, and returns the action of a symbol driving that edge (Eq. 9). On an infeasible action
+// it tries another symbol of the same edge, then another neighbour that lowers d_F, then
+// (beyond the paper) rebuilds G and d_F without every action known to be infeasible, and
+// only then declares the mission infeasible, with the reason.
+//
+// Word semantics (docs/symbolic.md): the symbol at each instant is the last completed
+// visible action (π0 before the first), so each action is held until the next one; X-free
+// formulas are stutter-invariant, which is why X is rejected.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "ltl/automaton.h"
+#include "ltl/formula.h"
+#include "ltl/translate.h"
+#include "symbolic/action.h"
+#include "symbolic/mission_graph.h"
+
+namespace rearm::symbolic {
+
+enum class MissionStatus {
+  InProgress,  // descending towards V_F
+  Accepting,   // traversing the accepting cycle: the task is satisfied so far
+  Infeasible,  // no accepting cycle is reachable without the infeasible actions
+};
+const char* to_string(MissionStatus s);
+
+// Rejects, with an explanation, what the mission controller cannot handle (the paper's
+// fragment, Section II-B): X anywhere; a negation (including the implicit ones of ->, <->
+// and xor) over a temporal subformula — negation is accepted only over Boolean combinations
+// of predicates; propositions that are not action predicates; and names unknown to a
+// non-empty vocabulary. Throws rearm::Error.
+void check_mission_formula(const ltl::Formula& f, const Vocabulary& vocabulary = {});
+
+struct MissionOptions {
+  std::optional<Action> initial;  // π0; none: the empty symbol
+  Vocabulary vocabulary;          // empty: any names
+  ltl::TranslateOptions translate;
+};
+
+class MissionController {
+ public:
+  // Checks the formula (check_mission_formula), translates it on the one-action alphabet
+  // and builds G. Throws rearm::Error for bad input, rearm::BudgetExceeded for blow-ups.
+  explicit MissionController(const ltl::Formula& formula, MissionOptions options = {});
+
+  // The action to perform next, or nullopt when there is nothing to do: the mission idles
+  // in an accepting self-loop (status Accepting) or is infeasible. Calling it again before
+  // a report returns the same action.
+  std::optional<Action> next_action();
+  // The action returned by next_action() completed.
+  void report_success();
+  // The action returned by next_action() proved infeasible (throws rearm::Error for any
+  // other action).
+  void report_infeasible(const Action& action);
+
+  MissionStatus status() const { return status_; }
+  const std::string& reason() const { return reason_; }
+  // The current automaton state (MissionGraph::kAux before the first step).
+  std::uint32_t automaton_state() const;
+  const ltl::ActionNba& automaton() const { return nba_; }
+  const MissionGraph& graph() const { return *graph_; }
+  // Current node of graph() and how often G was rebuilt: together they identify the
+  // controller's decision state (used to detect the plan's lasso).
+  std::uint32_t node() const { return node_; }
+  // The letter held now (0: none; i+1: automaton().alphabet.aps()[i]).
+  std::size_t held_letter() const { return held_; }
+  std::uint32_t generation() const { return generation_; }
+  std::vector<Action> infeasible_actions() const;
+
+ private:
+  struct Choice {
+    std::size_t edge;
+    std::size_t letter;
+  };
+  std::optional<Choice> choose(bool only_same_edge, const std::optional<Choice>& failed) const;
+  void rebuild();
+  Action action_of(std::size_t letter) const;
+  void set_infeasible(std::string reason);
+
+  ltl::ActionNba nba_;
+  std::vector<Action> actions_;  // letter i+1 is actions_[i]
+  std::size_t held_ = 0;         // held letter (0: none)
+  ltl::LetterSet excluded_;
+  std::unique_ptr<MissionGraph> graph_;
+  std::uint32_t node_ = 0;
+  std::uint32_t generation_ = 0;
+  std::optional<Choice> pending_;
+  MissionStatus status_ = MissionStatus::InProgress;
+  std::string reason_;
+};
+
+}  // namespace rearm::symbolic

@@ -1,0 +1,74 @@
+// The graph G of paper Appendix I-B over the one-action-at-a-time Büchi automaton: pruning
+// (the b_inf of Eq. 2 is built into the alphabet), the auxiliary initial state q_aux with
+// the initial symbol π0, the set D, single-symbol multi-hop edges (Eq. 4) with every symbol
+// that drives them (Eq. 9), accepting edges (Def. 3), V_F (Eq. 6) and d_F (Eq. 7) by BFS.
+//
+// Completeness beyond the paper (issue: a symbol cycling through several states with no
+// self-loop is a plan the paper's G cannot express): the automaton is self-loopized first
+// (Michaud & Duret-Lutz, SPIN 2015, construction `sl`): a node is an automaton state
+// together with the letter held when entering it, and holding that letter is always
+// possible. For stutter-invariant (X-free) formulas this keeps the language. Nodes whose
+// held letter already has a real self-loop are merged ("stable"), so G stays as small as
+// the automaton in the common case. See mission_graph.cpp.
+#pragma once
+
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "ltl/automaton.h"
+
+namespace rearm::symbolic {
+
+class MissionGraph {
+ public:
+  static constexpr std::uint32_t kInfinity = std::numeric_limits<std::uint32_t>::max();
+
+  struct Node {
+    std::uint32_t state;        // automaton state (kAux for q_aux)
+    std::int32_t split_letter;  // letter held with only an added self-loop, or -1 (stable)
+    bool started;               // some action has been performed (the held letter is not ε)
+  };
+  struct Edge {
+    std::uint32_t dst;
+    ltl::LetterSet letters;  // every symbol driving the edge (Eq. 9)
+    bool accepting;          // enters a final state by a real transition (Def. 3)
+    bool in_cycle;           // dst can reach the source again (same SCC)
+  };
+  static constexpr std::uint32_t kAux = std::numeric_limits<std::uint32_t>::max();
+
+  // Where G starts: q_aux holding π0 (state == kAux), or, when G is rebuilt during the
+  // mission, the current automaton state with the letter held now. Letters: 0 = no
+  // predicate, i+1 = the automaton's proposition i.
+  struct Start {
+    std::uint32_t state = kAux;
+    std::size_t held_letter = 0;
+  };
+  // `excluded`: letters known to be infeasible; their edges are left out (G and d_F
+  // recomputed without infeasible actions). G keeps a pointer to `nba`.
+  MissionGraph(const ltl::ActionNba& nba, Start start, const ltl::LetterSet& excluded);
+
+  const ltl::ActionNba& automaton() const { return *nba_; }
+  std::uint32_t num_nodes() const { return static_cast<std::uint32_t>(nodes_.size()); }
+  // The start node (q_aux, or the current situation of a rebuilt G).
+  std::uint32_t start() const { return 0; }
+  const Node& node(std::uint32_t v) const { return nodes_[v]; }
+  const std::vector<Edge>& out(std::uint32_t v) const { return out_[v]; }
+  std::size_t num_edges() const;
+  // V_F (Eq. 6), restricted to accepting edges inside an SCC so that an accepting edge
+  // never leads to a node from which V_F is unreachable.
+  bool in_vf(std::uint32_t v) const { return vf_[v]; }
+  // d_F (Eq. 7): hops to V_F, kInfinity when unreachable.
+  std::uint32_t d_f(std::uint32_t v) const { return df_[v]; }
+  std::string describe(std::uint32_t v) const;
+
+ private:
+  const ltl::ActionNba* nba_;
+  std::vector<Node> nodes_;
+  std::vector<std::vector<Edge>> out_;
+  std::vector<bool> vf_;
+  std::vector<std::uint32_t> df_;
+};
+
+}  // namespace rearm::symbolic
