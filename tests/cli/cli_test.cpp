@@ -98,4 +98,51 @@ TEST(CliTest, BadInputGivesAClearErrorAndExitCode) {
   EXPECT_TRUE(contains(budget.out, "budget")) << budget.out;
 }
 
+TEST(CliTest, PlanPrintsThePaperExamplesActionLassos) {
+  const Result eq1 = run(
+      "plan --formula '<>(grasp(M1) && <>(release(M1,l2) && <>(grasp(M2) && "
+      "<>(release(M2,l3) && <>(grasp(M3) && <>release(M3,l1))))))'");
+  ASSERT_EQ(eq1.code, 0) << eq1.out;
+  EXPECT_EQ(eq1.out,
+            "prefix: grasp(M1) release(M1,l2) grasp(M2) release(M2,l3) grasp(M3) "
+            "release(M3,l1)\ncycle: idle\n");
+  const Result fig4 =
+      run("plan --formula '<>(move(l1) && <>(move(l2) && <>(grasp(M1) && <>release(M1,l3))))'");
+  EXPECT_EQ(fig4.out, "prefix: move(l1) move(l2) grasp(M1) release(M1,l3)\ncycle: idle\n");
+  EXPECT_EQ(run("plan --formula '<>move(l1)'").out, "prefix: move(l1)\ncycle: idle\n");
+  const Result patrol = run("plan --formula '[]<>move(l1) && []<>move(l2)'");
+  EXPECT_TRUE(contains(patrol.out, "cycle: move(l1) move(l2)\n") ||
+              contains(patrol.out, "cycle: move(l2) move(l1)\n"))
+      << patrol.out;
+  EXPECT_EQ(run("plan --help").code, 0);
+}
+
+TEST(CliTest, PlanWithInfeasibleActions) {
+  EXPECT_EQ(run("plan --formula '<>(move(l1) || move(l2))' --infeasible 'move(l1)'").out,
+            "prefix: move(l2)\ncycle: idle\n");
+  const Result r = run("plan --formula '<>move(l1)' --infeasible 'move(l1)'");
+  EXPECT_EQ(r.code, 0);
+  EXPECT_TRUE(contains(r.out, "infeasible: ")) << r.out;
+  EXPECT_TRUE(contains(r.out, "move(l1)")) << r.out;
+}
+
+TEST(CliTest, PlanRejectsBadInputWithAReason) {
+  const Result x = run("plan --formula 'X move(l1)'");
+  EXPECT_EQ(x.code, 2);
+  EXPECT_TRUE(contains(x.out, "X (next)")) << x.out;
+  const Result neg = run("plan --formula '!<>move(l1)'");
+  EXPECT_EQ(neg.code, 2);
+  EXPECT_TRUE(contains(neg.out, "negation")) << neg.out;
+  const Result name = run("plan --formula '<>move(l9)' --regions l1,l2");
+  EXPECT_EQ(name.code, 2);
+  EXPECT_TRUE(contains(name.out, "unknown region 'l9'")) << name.out;
+  const Result inf = run("plan --formula '<>grasp(M1)' --objects M1 --infeasible 'grasp(M7)'");
+  EXPECT_EQ(inf.code, 2);
+  EXPECT_TRUE(contains(inf.out, "unknown object 'M7'")) << inf.out;
+  const Result ap = run("plan --formula '<>p1'");
+  EXPECT_EQ(ap.code, 2);
+  EXPECT_TRUE(contains(ap.out, "not an action predicate")) << ap.out;
+  EXPECT_EQ(run("plan").code, 2);
+}
+
 }  // namespace
