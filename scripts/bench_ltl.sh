@@ -16,7 +16,7 @@ MACHINE=${MACHINE:-debian12-2core}
 BUILD=${BUILD:-build}
 OUT="results/$MACHINE"
 
-cmake -S . -B "$BUILD" -DCMAKE_BUILD_TYPE=Release
+cmake -S . -B "$BUILD" -DCMAKE_BUILD_TYPE=Release -DREARM_SANITIZE=OFF -DREARM_BUILD_BENCH=ON
 cmake --build "$BUILD" --target translate_bench -j"$(nproc)"
 mkdir -p "$OUT"
 # The revision measured: taken before this script writes its own results.

@@ -6,7 +6,7 @@ cd "$(dirname "$0")/.."
 bash scripts/setup.sh
 BUILD=${BUILD:-build}
 MACHINE=${MACHINE:-debian12-2core}
-cmake -S . -B "$BUILD" -DCMAKE_BUILD_TYPE=Release
+cmake -S . -B "$BUILD" -DCMAKE_BUILD_TYPE=Release -DREARM_SANITIZE=OFF -DREARM_BUILD_BENCH=ON
 cmake --build "$BUILD" --target mission_bench -j"$(nproc)"
 mkdir -p "results/$MACHINE"
 "$BUILD/bin/mission_bench" --benchmark_out="results/$MACHINE/symbolic_mission.json" \
