@@ -147,6 +147,12 @@ std::optional<Action> MissionController::next_action() {
   for (;;) {
     const std::optional<Choice> c = choose(false, std::nullopt);
     if (!c) {
+      if (!graph_current_) {  // G still counts on actions reported infeasible since
+        rebuild();
+        if (status_ == MissionStatus::Infeasible) return std::nullopt;
+        seen.clear();  // node ids of the new G
+        continue;
+      }
       set_infeasible("no accepting cycle is reachable from automaton state " +
                      graph_->describe(node_) + " without the infeasible actions");
       return std::nullopt;
@@ -182,6 +188,7 @@ void MissionController::report_infeasible(const Action& action) {
   const Choice failed = *pending_;
   pending_.reset();
   excluded_.set(failed.letter);
+  graph_current_ = false;
   // 1. Another symbol of the same edge; 2. another neighbour that lowers d_F (Appendix I-C).
   if (auto c = choose(true, failed); c && c->letter != held_) {
     pending_ = c;
@@ -200,6 +207,7 @@ void MissionController::rebuild() {
   graph_ = std::make_unique<MissionGraph>(nba_, MissionGraph::Start{state, held_}, excluded_);
   node_ = graph_->start();
   ++generation_;
+  graph_current_ = true;
   status_ = MissionStatus::InProgress;
   if (graph_->d_f(node_) == MissionGraph::kInfinity) {
     std::string names;

@@ -91,6 +91,9 @@ class MissionController {
   std::unique_ptr<MissionGraph> graph_;
   std::uint32_t node_ = 0;
   std::uint32_t generation_ = 0;
+  // Whether graph_ was built with every letter now in excluded_ (else it may still hold
+  // edges that only infeasible actions drive).
+  bool graph_current_ = true;
   std::optional<Choice> pending_;
   MissionStatus status_ = MissionStatus::InProgress;
   std::string reason_;
