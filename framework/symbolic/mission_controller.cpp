@@ -82,8 +82,8 @@ MissionController::MissionController(const ltl::Formula& formula, MissionOptions
     held_ = static_cast<std::size_t>(nba_.alphabet.find_ap(options.initial->to_string())) + 1;
   }
   excluded_ = ltl::LetterSet(nba_.alphabet.num_letters());
-  graph_ = std::make_unique<MissionGraph>(nba_, MissionGraph::Start{MissionGraph::kAux, held_},
-                                          excluded_);
+  reachable_ = read(nba_.initial, held_);  // π0 is the symbol at instant 0
+  graph_ = std::make_unique<MissionGraph>(nba_, MissionGraph::Start{{}, held_}, excluded_);
   if (graph_->d_f(node_) == MissionGraph::kInfinity) {
     set_infeasible(
         "the formula has no satisfying sequence of actions (no accepting cycle of "
@@ -177,7 +177,32 @@ void MissionController::report_success() {
   if (e.accepting && e.in_cycle) status_ = MissionStatus::Accepting;
   node_ = e.dst;
   held_ = pending_->letter;
+  reachable_ = read(reachable_, held_);
   pending_.reset();
+}
+
+std::vector<std::uint32_t> MissionController::read(const std::vector<std::uint32_t>& states,
+                                                   std::size_t letter) const {
+  std::vector<bool> in(nba_.num_states(), false);
+  std::vector<std::uint32_t> out;
+  for (std::uint32_t q : states) {
+    for (const auto& e : nba_.out[q]) {
+      if (e.guard.test(letter) && !in[e.dst]) {
+        in[e.dst] = true;
+        out.push_back(e.dst);
+      }
+    }
+  }
+  for (std::size_t i = 0; i < out.size(); ++i) {  // holding the letter longer
+    for (const auto& e : nba_.out[out[i]]) {
+      if (e.guard.test(letter) && !in[e.dst]) {
+        in[e.dst] = true;
+        out.push_back(e.dst);
+      }
+    }
+  }
+  std::sort(out.begin(), out.end());
+  return out;
 }
 
 void MissionController::report_infeasible(const Action& action) {
@@ -202,9 +227,15 @@ void MissionController::report_infeasible(const Action& action) {
   rebuild();
 }
 
+// G and d_F again, without the infeasible actions, from every automaton state the actions
+// performed so far can have led to: the branch the controller followed may be a dead end
+// without those actions while another branch of the same word is not.
 void MissionController::rebuild() {
-  const std::uint32_t state = graph_->node(node_).state;
-  graph_ = std::make_unique<MissionGraph>(nba_, MissionGraph::Start{state, held_}, excluded_);
+  if (reachable_.empty()) {
+    set_infeasible("the actions performed so far leave no run of the automaton");
+    return;
+  }
+  graph_ = std::make_unique<MissionGraph>(nba_, MissionGraph::Start{reachable_, held_}, excluded_);
   node_ = graph_->start();
   ++generation_;
   graph_current_ = true;
@@ -213,8 +244,10 @@ void MissionController::rebuild() {
     std::string names;
     for (const Action& a : infeasible_actions())
       names += (names.empty() ? "" : ", ") + a.to_string();
-    set_infeasible("no accepting cycle of the automaton is reachable from state " +
-                   graph_->describe(node_) + " without the infeasible actions {" + names + "}");
+    set_infeasible(
+        "no accepting cycle of the automaton is reachable, after the actions "
+        "performed so far, without the infeasible actions {" +
+        names + "}");
   }
 }
 

@@ -81,12 +81,17 @@ class MissionController {
   };
   std::optional<Choice> choose(bool only_same_edge, const std::optional<Choice>& failed) const;
   void rebuild();
+  // Successors of `states` under `letter`, closed under holding it longer (stuttering).
+  std::vector<std::uint32_t> read(const std::vector<std::uint32_t>& states,
+                                  std::size_t letter) const;
   Action action_of(std::size_t letter) const;
   void set_infeasible(std::string reason);
 
   ltl::ActionNba nba_;
   std::vector<Action> actions_;  // letter i+1 is actions_[i]
   std::size_t held_ = 0;         // held letter (0: none)
+  // Automaton states some run on the word performed so far can be in (all branches).
+  std::vector<std::uint32_t> reachable_;
   ltl::LetterSet excluded_;
   std::unique_ptr<MissionGraph> graph_;
   std::uint32_t node_ = 0;

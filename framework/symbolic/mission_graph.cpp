@@ -82,7 +82,9 @@ MissionGraph::MissionGraph(const ltl::ActionNba& nba, Start start, const LetterS
   const std::size_t num_letters = nba.alphabet.num_letters();
   REARM_DEMAND(excluded.universe() == num_letters, "excluded letters of another alphabet");
   REARM_DEMAND(start.held_letter < num_letters, "held letter outside the alphabet");
-  REARM_DEMAND(start.state == kAux || start.state < nba.num_states(), "unknown start state");
+  for (std::uint32_t q : start.states) {
+    REARM_DEMAND(q < nba.num_states(), "unknown start state");
+  }
   // Real self-loop letters per automaton state.
   std::vector<LetterSet> real_loop(nba.num_states(), LetterSet(num_letters));
   for (std::uint32_t q = 0; q < nba.num_states(); ++q) {
@@ -119,23 +121,26 @@ MissionGraph::MissionGraph(const ltl::ActionNba& nba, Start start, const LetterS
   };
 
   const bool start_started = start.held_letter != 0;
-  if (start.state == kAux) {
+  const LetterSet held = LetterSet::single(num_letters, start.held_letter);
+  id_of(kAux, -1, start_started);
+  if (start.states.empty()) {
     // q_aux (Appendix I-B): the situation before instant 0. π0 is the symbol at instant 0
     // (docs/symbolic.md word semantics), so the automaton reads it from its initial states:
     // q_aux has an edge, enabled by π0 alone, to the successors of each initial state under
     // π0. (The paper's q_aux -> q0 edge consumes π0 without the automaton reading it, which
     // would evaluate the formula on the word without its first symbol.)
-    id_of(kAux, -1, start_started);
-    const LetterSet pi0 = LetterSet::single(num_letters, start.held_letter);
     for (std::uint32_t q0 : nba.initial) {
       for (const auto& e : nba.out[q0]) {
         if (!e.guard.test(start.held_letter)) continue;
         const std::uint32_t v = id_of(e.dst, class_of(e.dst, start.held_letter), start_started);
-        add_edge(0, v, pi0, nba.accepting[e.dst]);
+        add_edge(0, v, held, nba.accepting[e.dst]);
       }
     }
   } else {
-    id_of(start.state, class_of(start.state, start.held_letter), start_started);
+    // Rebuilt during the mission: the states already reached, entered holding the letter.
+    for (std::uint32_t q : start.states) {
+      add_edge(0, id_of(q, class_of(q, start.held_letter), start_started), held, false);
+    }
   }
   // Explore the nodes reachable from the start (the set D of Eq. 3: every node has a
   // self-loop, real or added).

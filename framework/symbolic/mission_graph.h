@@ -38,11 +38,14 @@ class MissionGraph {
   };
   static constexpr std::uint32_t kAux = std::numeric_limits<std::uint32_t>::max();
 
-  // Where G starts: q_aux holding π0 (state == kAux), or, when G is rebuilt during the
-  // mission, the current automaton state with the letter held now. Letters: 0 = no
-  // predicate, i+1 = the automaton's proposition i.
+  // Where G starts. Node 0 is always a start node like q_aux. From the beginning of the
+  // mission (`states` empty) it holds π0 = held_letter and its edges lead where the
+  // automaton's initial states go on π0. When G is rebuilt during the mission, `states` are
+  // the automaton states the word performed so far can have reached (every branch, not just
+  // the one the controller was following) and the start node's edges lead to each of them
+  // with the letter held now. Letters: 0 = no predicate, i+1 = the automaton's proposition i.
   struct Start {
-    std::uint32_t state = kAux;
+    std::vector<std::uint32_t> states;
     std::size_t held_letter = 0;
   };
   // `excluded`: letters known to be infeasible; their edges are left out (G and d_F

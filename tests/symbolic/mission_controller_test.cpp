@@ -179,12 +179,10 @@ TEST(MissionGraph, SelfLoopizationKeepsASymbolCyclingWithoutSelfLoops) {
   const ltl::LetterSet a = nba.alphabet.ap(0, true);
   nba.add_edge(0, 1, a);
   nba.add_edge(1, 0, a);
-  const MissionGraph g(nba, MissionGraph::Start{MissionGraph::kAux, 1},
-                       ltl::LetterSet(nba.alphabet.num_letters()));
+  const MissionGraph g(nba, MissionGraph::Start{{}, 1}, ltl::LetterSet(nba.alphabet.num_letters()));
   EXPECT_NE(g.d_f(g.start()), MissionGraph::kInfinity);
   // From the empty start the first action a is needed; then holding it is enough.
-  const MissionGraph h(nba, MissionGraph::Start{MissionGraph::kAux, 0},
-                       ltl::LetterSet(nba.alphabet.num_letters()));
+  const MissionGraph h(nba, MissionGraph::Start{{}, 0}, ltl::LetterSet(nba.alphabet.num_letters()));
   EXPECT_EQ(h.d_f(h.start()), MissionGraph::kInfinity) << "q0 cannot read the empty symbol";
 }
 
