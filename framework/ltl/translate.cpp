@@ -37,6 +37,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "core/scc.h"
 #include "ltl/simplify.h"
 
 namespace rearm::ltl {
@@ -510,56 +511,6 @@ Tgba<A> build_tgba(A& alpha, Vwaa<A>& vwaa, const Formula& f, Clock& clock) {
   return g;
 }
 
-// Tarjan's SCCs (iterative). Returns the SCC index of each state; SCC indices are in
-// reverse topological order (successor SCCs first).
-template <class Out, class Dst>
-std::vector<std::uint32_t> sccs(const Out& out, Dst dst_of, std::uint32_t& count) {
-  const std::uint32_t n = static_cast<std::uint32_t>(out.size());
-  constexpr std::uint32_t kUnvisited = ~0u;
-  std::vector<std::uint32_t> index(n, kUnvisited), low(n, 0), comp(n, kUnvisited);
-  std::vector<std::uint32_t> stack;
-  std::vector<bool> on_stack(n, false);
-  std::vector<std::pair<std::uint32_t, std::size_t>> call;
-  std::uint32_t next_index = 0;
-  count = 0;
-  for (std::uint32_t root = 0; root < n; ++root) {
-    if (index[root] != kUnvisited) continue;
-    call.push_back({root, 0});
-    while (!call.empty()) {
-      auto& [v, i] = call.back();
-      if (i == 0) {
-        index[v] = low[v] = next_index++;
-        stack.push_back(v);
-        on_stack[v] = true;
-      }
-      if (i < out[v].size()) {
-        const std::uint32_t w = dst_of(out[v][i]);
-        ++i;
-        if (index[w] == kUnvisited) {
-          call.push_back({w, 0});
-        } else if (on_stack[w]) {
-          low[v] = std::min(low[v], index[w]);
-        }
-        continue;
-      }
-      if (low[v] == index[v]) {
-        std::uint32_t w;
-        do {
-          w = stack.back();
-          stack.pop_back();
-          on_stack[w] = false;
-          comp[w] = count;
-        } while (w != v);
-        ++count;
-      }
-      const std::uint32_t done = v;
-      call.pop_back();
-      if (!call.empty()) low[call.back().first] = std::min(low[call.back().first], low[done]);
-    }
-  }
-  return comp;
-}
-
 // Keeps the states reachable from the initial ones that can reach an accepting SCC
 // (`accepting_scc` decides on an SCC from its states), renumbering them in increasing
 // order. Returns the renumbering (old -> new, ~0u for removed states).
@@ -581,7 +532,7 @@ std::vector<std::uint32_t> prune(G& g, Dst dst_of, SetDst set_dst, AccSccFn acce
     }
   }
   std::uint32_t count = 0;
-  const std::vector<std::uint32_t> comp = sccs(g.out, dst_of, count);
+  const std::vector<std::uint32_t> comp = strongly_connected_components(g.out, dst_of, &count);
   std::vector<std::vector<std::uint32_t>> members(count);
   for (std::uint32_t s = 0; s < n; ++s) members[comp[s]].push_back(s);
   // SCCs come successors first: a state is useful when its SCC accepts or an edge leads
@@ -770,8 +721,8 @@ Automaton<A> degeneralize(const A& alpha, const Tgba<A>& g, Clock& clock) {
   const std::uint32_t n = static_cast<std::uint32_t>(g.out.size());
   const std::size_t k = g.num_acc;
   std::uint32_t count = 0;
-  const auto comp = sccs(
-      g.out, [](const auto& e) { return e.dst; }, count);
+  const auto comp = strongly_connected_components(
+      g.out, [](const auto& e) { return e.dst; }, &count);
   // An SCC can be accepting only if its inner edges carry every mark.
   std::vector<Marks> seen(count);
   std::vector<bool> cyclic(count, false);

@@ -24,58 +24,10 @@
 #include <tuple>
 
 #include "core/error.h"
+#include "core/scc.h"
 
 namespace rearm::symbolic {
-namespace {
-
 using ltl::LetterSet;
-
-// Tarjan's SCCs, iterative; returns the component of each node.
-std::vector<std::uint32_t> components(const std::vector<std::vector<MissionGraph::Edge>>& out) {
-  const auto n = static_cast<std::uint32_t>(out.size());
-  constexpr std::uint32_t kNone = ~0u;
-  std::vector<std::uint32_t> index(n, kNone), low(n, 0), comp(n, kNone), stack;
-  std::vector<bool> on_stack(n, false);
-  std::vector<std::pair<std::uint32_t, std::size_t>> call;
-  std::uint32_t next = 0, count = 0;
-  for (std::uint32_t root = 0; root < n; ++root) {
-    if (index[root] != kNone) continue;
-    call.push_back({root, 0});
-    while (!call.empty()) {
-      auto& [v, i] = call.back();
-      if (i == 0) {
-        index[v] = low[v] = next++;
-        stack.push_back(v);
-        on_stack[v] = true;
-      }
-      if (i < out[v].size()) {
-        const std::uint32_t w = out[v][i++].dst;
-        if (index[w] == kNone) {
-          call.push_back({w, 0});
-        } else if (on_stack[w]) {
-          low[v] = std::min(low[v], index[w]);
-        }
-        continue;
-      }
-      if (low[v] == index[v]) {
-        std::uint32_t w;
-        do {
-          w = stack.back();
-          stack.pop_back();
-          on_stack[w] = false;
-          comp[w] = count;
-        } while (w != v);
-        ++count;
-      }
-      const std::uint32_t done = v;
-      call.pop_back();
-      if (!call.empty()) low[call.back().first] = std::min(low[call.back().first], low[done]);
-    }
-  }
-  return comp;
-}
-
-}  // namespace
 
 MissionGraph::MissionGraph(const ltl::ActionNba& nba, Start start, const LetterSet& excluded)
     : nba_(&nba) {
@@ -168,7 +120,7 @@ MissionGraph::MissionGraph(const ltl::ActionNba& nba, Start start, const LetterS
     }
   }
   // Accepting edges inside an SCC define V_F (Def. 3, Eq. 6); d_F by reverse BFS (Eq. 7).
-  const auto comp = components(out_);
+  const auto comp = strongly_connected_components(out_, [](const Edge& e) { return e.dst; });
   const std::uint32_t n = num_nodes();
   vf_.assign(n, false);
   std::vector<std::vector<std::uint32_t>> in(n);
