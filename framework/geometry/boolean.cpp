@@ -1,0 +1,201 @@
+// Boolean operations of boolean.h on CGAL::Polygon_set_2 over the exact-constructions kernel
+// (cgal_internal.h). The operations are regularized (CGAL's convention): lower-dimensional
+// pieces such as the shared edge of two touching squares vanish from an intersection, while
+// intersects() answers for the closed sets. The only CGAL Boolean translation unit.
+#include "geometry/boolean.h"
+
+#include <CGAL/Boolean_set_operations_2.h>
+#include <CGAL/Polygon_set_2.h>
+
+#include <algorithm>
+#include <iterator>
+#include <limits>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/error.h"
+#include "geometry/cgal_internal.h"
+
+namespace rearm::geometry {
+namespace {
+
+using internal::CPolygon;
+using internal::CPolygonWithHoles;
+using internal::Kernel;
+using PolygonSet = CGAL::Polygon_set_2<Kernel>;
+
+// Caller's regions, each boundary validated (polygon.h) and oriented as Region documents.
+// Contract (not re-checked): the holes of a region lie inside its outer boundary and are
+// pairwise interior-disjoint; distinct regions may overlap (they are united).
+RegionSet normalized(const RegionSet& s, const char* op, const char* operand) {
+  RegionSet out;
+  out.reserve(s.size());
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const std::string name = std::string(op) + ": " + operand + " region " + std::to_string(i);
+    Region r;
+    r.outer = validated(s[i].outer, (name + " outer boundary").c_str());
+    for (std::size_t k = 0; k < s[i].holes.size(); ++k) {
+      r.holes.push_back(validated(s[i].holes[k], (name + " hole " + std::to_string(k)).c_str()));
+    }
+    out.push_back(std::move(r));
+  }
+  return out;
+}
+
+PolygonSet to_set_exact(const RegionSet& normal) {
+  std::vector<CPolygonWithHoles> parts;
+  parts.reserve(normal.size());
+  for (const Region& r : normal) parts.push_back(internal::to_cgal(r));
+  PolygonSet out;
+  if (!parts.empty()) out.join(parts.begin(), parts.end());
+  return out;
+}
+
+// A CGAL boundary cycle in doubles, cut into simple loops. CGAL's boundaries are only
+// relatively simple: the union of two squares touching at a corner is one outer cycle
+// through that corner twice, which validated() would reject when the result is fed back.
+// Rounding to doubles can also merge distinct vertices. Each loop is returned with CGAL's
+// orientation (counter-clockwise loops bound material, clockwise loops bound holes);
+// consecutive duplicates and loops of fewer than 3 vertices (no area) are dropped.
+std::vector<Polygon> simple_loops(const CPolygon& cycle) {
+  std::vector<Point> path;
+  std::vector<Polygon> loops;
+  auto emit = [&loops](std::vector<Point> v) {
+    if (v.size() >= 3) loops.push_back(Polygon{std::move(v)});
+  };
+  for (auto it = cycle.vertices_begin(); it != cycle.vertices_end(); ++it) {
+    const Point v = internal::from_cgal(*it);
+    if (!path.empty() && path.back() == v) continue;
+    const auto seen = std::find(path.begin(), path.end(), v);
+    if (seen != path.end()) {
+      emit(std::vector<Point>(seen, path.end()));
+      path.erase(seen + 1, path.end());
+    } else {
+      path.push_back(v);
+    }
+  }
+  while (path.size() > 1 && path.back() == path.front()) path.pop_back();
+  emit(std::move(path));
+  return loops;
+}
+
+RegionSet from_set_exact(const PolygonSet& s) {
+  std::vector<CPolygonWithHoles> parts;
+  s.polygons_with_holes(std::back_inserter(parts));
+  RegionSet out;
+  for (const CPolygonWithHoles& p : parts) {
+    REARM_DEMAND(!p.is_unbounded(), "a bounded Boolean operation gave an unbounded region");
+    std::vector<Polygon> loops = simple_loops(p.outer_boundary());
+    for (auto h = p.holes_begin(); h != p.holes_end(); ++h) {
+      std::vector<Polygon> more = simple_loops(*h);
+      loops.insert(loops.end(), more.begin(), more.end());
+    }
+    const std::size_t first = out.size();
+    std::vector<Polygon> holes;
+    for (Polygon& loop : loops) {
+      if (loop.signed_area() > 0) {
+        out.push_back(Region{std::move(loop), {}});
+      } else {
+        std::reverse(loop.vertices.begin(), loop.vertices.end());
+        holes.push_back(std::move(loop));
+      }
+    }
+    // Usually one outer loop. Otherwise a hole belongs to the smallest loop containing the
+    // midpoint of one of its edges (loops of a relatively simple cycle share no edge).
+    for (Polygon& h : holes) {
+      std::size_t best = first;
+      if (out.size() - first > 1) {
+        const Point probe = (h.vertices[0] + h.vertices[1]) / 2;
+        double best_area = std::numeric_limits<double>::infinity();
+        for (std::size_t k = first; k < out.size(); ++k) {
+          const double a = out[k].outer.area();
+          if (a < best_area && contains(out[k].outer, probe)) {
+            best = k;
+            best_area = a;
+          }
+        }
+      }
+      REARM_DEMAND(best < out.size(), "a Boolean result has a hole but no outer boundary");
+      out[best].holes.push_back(std::move(h));
+    }
+  }
+  return out;
+}
+
+std::vector<Kernel::Segment_2> boundary_segments(const RegionSet& s) {
+  std::vector<Kernel::Segment_2> out;
+  auto add = [&out](const Polygon& p) {
+    for (std::size_t i = 0, n = p.size(); i < n; ++i) {
+      out.emplace_back(internal::to_cgal(p.vertices[i]),
+                       internal::to_cgal(p.vertices[(i + 1) % n]));
+    }
+  };
+  for (const Region& r : s) {
+    add(r.outer);
+    for (const Polygon& h : r.holes) add(h);
+  }
+  return out;
+}
+
+}  // namespace
+
+RegionSet to_set(const Polygon& p) { return {Region{validated(p, "to_set: polygon"), {}}}; }
+
+RegionSet unite(const RegionSet& a, const RegionSet& b) {
+  PolygonSet s = to_set_exact(normalized(a, "unite", "first"));
+  s.join(to_set_exact(normalized(b, "unite", "second")));
+  return from_set_exact(s);
+}
+
+RegionSet intersect(const RegionSet& a, const RegionSet& b) {
+  PolygonSet s = to_set_exact(normalized(a, "intersect", "first"));
+  s.intersection(to_set_exact(normalized(b, "intersect", "second")));
+  return from_set_exact(s);
+}
+
+RegionSet subtract(const RegionSet& a, const RegionSet& b) {
+  PolygonSet s = to_set_exact(normalized(a, "subtract", "first"));
+  s.difference(to_set_exact(normalized(b, "subtract", "second")));
+  return from_set_exact(s);
+}
+
+RegionSet unite_all(const std::vector<Polygon>& polygons) {
+  std::vector<CPolygon> parts;
+  parts.reserve(polygons.size());
+  for (std::size_t i = 0; i < polygons.size(); ++i) {
+    const std::string name = "unite_all: polygon " + std::to_string(i);
+    parts.push_back(internal::to_cgal(validated(polygons[i], name.c_str())));
+  }
+  PolygonSet s;
+  if (!parts.empty()) s.join(parts.begin(), parts.end());  // aggregated (divide and conquer)
+  return from_set_exact(s);
+}
+
+// Closed sets meet iff two boundary segments meet (exact predicate), or, with disjoint
+// boundaries, a region of one set lies wholly inside the other, which one outer vertex of
+// that region decides. O(n m) segment tests with a bounding-box filter.
+bool intersects(const RegionSet& a, const RegionSet& b) {
+  const RegionSet na = normalized(a, "intersects", "first");
+  const RegionSet nb = normalized(b, "intersects", "second");
+  const std::vector<Kernel::Segment_2> sa = boundary_segments(na);
+  const std::vector<Kernel::Segment_2> sb = boundary_segments(nb);
+  std::vector<CGAL::Bbox_2> boxes_b;
+  boxes_b.reserve(sb.size());
+  for (const auto& s : sb) boxes_b.push_back(s.bbox());
+  for (const auto& s : sa) {
+    const CGAL::Bbox_2 box = s.bbox();
+    for (std::size_t j = 0; j < sb.size(); ++j) {
+      if (CGAL::do_overlap(box, boxes_b[j]) && CGAL::do_intersect(s, sb[j])) return true;
+    }
+  }
+  for (const Region& r : na) {
+    if (contains(nb, r.outer.vertices.front())) return true;
+  }
+  for (const Region& r : nb) {
+    if (contains(na, r.outer.vertices.front())) return true;
+  }
+  return false;
+}
+
+}  // namespace rearm::geometry

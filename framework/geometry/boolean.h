@@ -1,0 +1,22 @@
+// Exact polygon Boolean operations (CGAL Polygon_set_2 over the exact-constructions kernel;
+// results rounded back to doubles and split into simple loops). The operations are
+// regularized (two squares touching along an edge have an empty intersection), while
+// intersects() counts touching. Every input boundary is validated (polygon.h) and bad input
+// throws rearm::Error naming it; holes of an input region must lie inside its outer boundary
+// and not overlap each other (not re-checked).
+#pragma once
+
+#include "geometry/polygon.h"
+
+namespace rearm::geometry {
+
+RegionSet to_set(const Polygon& p);
+RegionSet unite(const RegionSet& a, const RegionSet& b);
+RegionSet intersect(const RegionSet& a, const RegionSet& b);
+RegionSet subtract(const RegionSet& a, const RegionSet& b);
+// Union of many polygons (overlapping obstacles consolidated, holes kept).
+RegionSet unite_all(const std::vector<Polygon>& polygons);
+// Do the closed sets touch or overlap (exact)?
+bool intersects(const RegionSet& a, const RegionSet& b);
+
+}  // namespace rearm::geometry

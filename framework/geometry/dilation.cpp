@@ -1,0 +1,107 @@
+// Dilation by a disk (docs/reactive.md §2).
+//  - dilate_round: exact Minkowski sum (CGAL, exact kernel) with the regular n-gon whose
+//    edges touch the circle of radius r (vertices at r / cos(π/n)). The n-gon contains the
+//    disk, so the result contains the exact dilation; its boundary lies within
+//    r·(1/cos(π/n) − 1) <= kMaxDilationError·r of the exact boundary. (The n-gon's and the
+//    result's vertices are doubles: "contains" holds up to their rounding, ~1e-16·r.)
+//  - dilate_miter: the mitered offset of the whole polygon, built exactly (unite_all) as the
+//    union of the polygon, each edge's outward strip of width r, and at each convex vertex
+//    the miter corner bounded by the two offset lines; a corner whose miter point lies
+//    farther than kMiterLimit·r from the vertex is bevelled by the line perpendicular to the
+//    corner's bisector at distance kMiterLimit·r. Reflex vertices need no corner: the two
+//    strips overlap there. The result contains the exact disk dilation (strips cover the
+//    edges, corners the vertex sectors, and the bevel line is at distance >= r); its points
+//    are within r / cos(φ/2) of the polygon at unbevelled corners (φ the turning angle) and
+//    within sqrt(kMiterLimit² + 1)·r at bevelled ones (the bevel's ends).
+#include "geometry/dilation.h"
+
+#include <CGAL/minkowski_sum_2.h>
+
+#include <cmath>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "core/error.h"
+#include "geometry/boolean.h"
+#include "geometry/cgal_internal.h"
+
+namespace rearm::geometry {
+namespace {
+
+// The smallest number of sides for the circumscribed polygon.
+constexpr int kMinDiskSides = 8;
+
+void check_radius(double r, const char* what) {
+  if (!std::isfinite(r) || !(r > 0)) {
+    throw Error(std::string(what) + ": radius must be finite and > 0, got " + std::to_string(r));
+  }
+}
+
+// Smallest even n >= kMinDiskSides with 1/cos(π/n) − 1 <= kMaxDilationError (the relative
+// distance between the circumscribed n-gon's vertices and the circle).
+int disk_sides() {
+  int n = kMinDiskSides;
+  while (1 / std::cos(std::numbers::pi / n) - 1 > kMaxDilationError) n += 2;
+  return n;
+}
+
+internal::CPolygon circumscribed_disk(double r) {
+  const int n = disk_sides();
+  const double radius = r / std::cos(std::numbers::pi / n);
+  internal::CPolygon disk;
+  for (int k = 0; k < n; ++k) {
+    const double a = 2 * std::numbers::pi * k / n;
+    disk.push_back(internal::to_cgal(Point(radius * std::cos(a), radius * std::sin(a))));
+  }
+  return disk;
+}
+
+}  // namespace
+
+RegionSet dilate_round(const Polygon& p, double r) {
+  check_radius(r, "dilate_round");
+  const Polygon ccw = validated(p, "dilate_round polygon");
+  const internal::CPolygonWithHoles sum =
+      CGAL::minkowski_sum_2(internal::to_cgal(ccw), circumscribed_disk(r));
+  return RegionSet{internal::from_cgal(sum)};
+}
+
+RegionSet dilate_miter(const Polygon& p, double r) {
+  check_radius(r, "dilate_miter");
+  const Polygon q = validated(p, "dilate_miter polygon");  // counter-clockwise
+  const std::size_t n = q.size();
+  auto cross = [](const Point& a, const Point& b) { return a.x() * b.y() - a.y() * b.x(); };
+  std::vector<Point> dir(n), normal(n);  // edge i: q[i] -> q[i+1], outward normal on the right
+  for (std::size_t i = 0; i < n; ++i) {
+    dir[i] = (q.vertices[(i + 1) % n] - q.vertices[i]).normalized();
+    normal[i] = Point(dir[i].y(), -dir[i].x());
+  }
+  std::vector<Polygon> parts{q};
+  for (std::size_t i = 0; i < n; ++i) {  // edge strips
+    const Point& a = q.vertices[i];
+    const Point& b = q.vertices[(i + 1) % n];
+    parts.push_back(Polygon{{a, a + r * normal[i], b + r * normal[i], b}});
+  }
+  const double limit = kMiterLimit * r;
+  for (std::size_t i = 0; i < n; ++i) {  // convex corners
+    const std::size_t in = (i + n - 1) % n;
+    if (!(cross(dir[in], dir[i]) > 0)) continue;  // reflex or collinear: strips suffice
+    const Point& v = q.vertices[i];
+    const Point& n1 = normal[in];
+    const Point& n2 = normal[i];
+    const Point miter = v + r * (n1 + n2) / (1 + n1.dot(n2));  // at distance r from both lines
+    if ((miter - v).norm() <= limit) {
+      parts.push_back(Polygon{{v, v + r * n1, miter, v + r * n2}});
+      continue;
+    }
+    // Bevel: cut the corner by {x : (x - v)·b = limit}, b the outward bisector.
+    const Point b = (n1 + n2).normalized();
+    const Point p1 = v + r * n1 + dir[in] * ((limit - r * n1.dot(b)) / dir[in].dot(b));
+    const Point p2 = v + r * n2 - dir[i] * ((limit - r * n2.dot(b)) / -dir[i].dot(b));
+    parts.push_back(Polygon{{v, v + r * n1, p1, p2, v + r * n2}});
+  }
+  return unite_all(parts);
+}
+
+}  // namespace rearm::geometry

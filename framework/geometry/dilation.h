@@ -1,0 +1,29 @@
+// Dilation of polygons by a disk of radius r (docs/reactive.md §2): the obstacles grown by
+// the robot radius (or robot + object radius).
+//  - round: Minkowski sum with a regular polygon circumscribed about the disk, so the
+//    result contains the exact dilation (conservative for safety) and its boundary is
+//    within r·(1/cos(π/n) − 1) of the exact one; n is chosen from kMaxDilationError.
+//  - miter: the mitered offset of reactive.md §2 (familiar polygons): every edge pushed out
+//    by r, consecutive offset lines meeting at convex vertices, corners longer than
+//    kMiterLimit·r bevelled. Contains the exact dilation; every point is within
+//    r / cos(φ/2) of the polygon (φ the largest convex turning angle), and within
+//    sqrt(kMiterLimit² + 1)·r at bevelled corners.
+#pragma once
+
+#include "geometry/polygon.h"
+
+namespace rearm::geometry {
+
+// Largest distance allowed between the round dilation's boundary and the exact one,
+// relative to r (0.5 %).
+inline constexpr double kMaxDilationError = 5e-3;
+
+// Longest miter corner, in units of r (>= 1 so the bevelled corner still contains the
+// disk dilation); sharper corners are bevelled, as SVG's stroke-miterlimit does.
+inline constexpr double kMiterLimit = 2.0;
+
+// p is validated (polygon.h); r must be finite and > 0. Both throw rearm::Error otherwise.
+RegionSet dilate_round(const Polygon& p, double r);
+RegionSet dilate_miter(const Polygon& p, double r);
+
+}  // namespace rearm::geometry

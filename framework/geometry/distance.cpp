@@ -1,0 +1,50 @@
+// Point-to-polygon distances in doubles (docs/architecture.md rule 5: doubles are for the
+// control law; only the inside test is an exact predicate, contains()).
+#include "geometry/distance.h"
+
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "core/error.h"
+
+namespace rearm::geometry {
+namespace {
+
+void check_finite(const Point& x, const char* what) {
+  if (!std::isfinite(x.x()) || !std::isfinite(x.y())) {
+    throw Error(std::string(what) + ": point is not finite");
+  }
+}
+
+}  // namespace
+
+Point nearest_on_segment(const Point& a, const Point& b, const Point& x) {
+  const Point d = b - a;
+  const double len2 = d.squaredNorm();
+  if (len2 <= 0) return a;  // degenerate segment: its only point
+  const double t = (x - a).dot(d) / len2;
+  if (t <= 0) return a;
+  if (t >= 1) return b;
+  return a + t * d;
+}
+
+Nearest nearest_on_boundary(const Polygon& p, const Point& x) {
+  check_finite(x, "nearest_on_boundary");
+  if (p.vertices.empty()) throw Error("nearest_on_boundary: polygon has no vertices");
+  Nearest best{p.vertices.front(), std::numeric_limits<double>::infinity()};
+  for (std::size_t i = 0, n = p.size(); i < n; ++i) {
+    const Point q = nearest_on_segment(p.vertices[i], p.vertices[(i + 1) % n], x);
+    const double d = (q - x).norm();
+    if (d < best.distance) best = Nearest{q, d};
+  }
+  return best;
+}
+
+double distance(const Polygon& p, const Point& x) {
+  check_finite(x, "distance");
+  if (contains(p, x)) return 0;
+  return nearest_on_boundary(p, x).distance;
+}
+
+}  // namespace rearm::geometry

@@ -1,0 +1,20 @@
+// Point-to-polygon distance and nearest point (doubles; the control law's inputs).
+#pragma once
+
+#include "geometry/polygon.h"
+
+namespace rearm::geometry {
+
+struct Nearest {
+  Point point;      // nearest point on the boundary
+  double distance;  // Euclidean distance to it (>= 0)
+};
+
+// Nearest point of the polygon's boundary to x.
+Nearest nearest_on_boundary(const Polygon& p, const Point& x);
+// Distance from x to the closed polygon: 0 inside, else the boundary distance.
+double distance(const Polygon& p, const Point& x);
+// Nearest point of a segment [a, b] to x.
+Point nearest_on_segment(const Point& a, const Point& b, const Point& x);
+
+}  // namespace rearm::geometry

@@ -1,0 +1,135 @@
+// The exact predicates of polygon.h: validated() and contains(). Inputs are doubles, which
+// CGAL's exact-predicates-inexact-constructions kernel represents exactly, so every decision
+// here (simplicity, orientation, point location) is exact; no construction is needed, which
+// keeps this translation unit lighter than the exact-constructions kernel of
+// cgal_internal.h.
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_2_algorithms.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "core/error.h"
+#include "geometry/polygon.h"
+
+namespace rearm::geometry {
+namespace {
+
+using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
+using EPoint = Epick::Point_2;
+
+bool finite(const Point& v) { return std::isfinite(v.x()) && std::isfinite(v.y()); }
+
+[[noreturn]] void fail(const char* what, const std::string& defect) {
+  throw Error(std::string(what) + ": " + defect);
+}
+
+std::string show(const Point& v) {
+  std::ostringstream s;
+  s.precision(17);
+  s << '(' << v.x() << ", " << v.y() << ')';
+  return s.str();
+}
+
+std::vector<EPoint> to_epick(const Polygon& p) {
+  std::vector<EPoint> out;
+  out.reserve(p.size());
+  for (const Point& v : p.vertices) out.emplace_back(v.x(), v.y());
+  return out;
+}
+
+// Finiteness and size of a polygon handed to contains() (house style 5); simplicity is the
+// caller's contract (the polygon as returned by validated()), not re-checked per query.
+void demand_finite(const Polygon& p, const char* what) {
+  if (p.size() < 3) fail(what, "needs at least 3 vertices, got " + std::to_string(p.size()));
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (!finite(p.vertices[i])) {
+      fail(what, "vertex " + std::to_string(i) + " is not finite " + show(p.vertices[i]));
+    }
+  }
+}
+
+// Exact location of x relative to p (orientation-independent).
+CGAL::Bounded_side locate(const Polygon& p, const Point& x) {
+  const std::vector<EPoint> pts = to_epick(p);
+  return CGAL::bounded_side_2(pts.begin(), pts.end(), EPoint(x.x(), x.y()), Epick());
+}
+
+void check_query(const Point& x) {
+  if (!finite(x)) fail("contains", "query point is not finite " + show(x));
+}
+
+bool region_contains(const Region& r, const Point& x) {
+  if (locate(r.outer, x) == CGAL::ON_UNBOUNDED_SIDE) return false;
+  for (const Polygon& h : r.holes) {
+    if (locate(h, x) == CGAL::ON_BOUNDED_SIDE) return false;
+  }
+  return true;
+}
+
+void demand_finite(const Region& r) {
+  demand_finite(r.outer, "contains: region outer boundary");
+  for (const Polygon& h : r.holes) demand_finite(h, "contains: region hole");
+}
+
+}  // namespace
+
+Polygon validated(const Polygon& p, const char* what) {
+  const std::size_t n = p.size();
+  if (n < 3) fail(what, "needs at least 3 vertices, got " + std::to_string(n));
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!finite(p.vertices[i])) {
+      fail(what, "vertex " + std::to_string(i) + " is not finite " + show(p.vertices[i]));
+    }
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t j = (i + 1) % n;
+    if (p.vertices[i] == p.vertices[j]) {
+      fail(what, "zero-length edge: vertices " + std::to_string(i) + " and " + std::to_string(j) +
+                     " coincide at " + show(p.vertices[i]));
+    }
+  }
+  const std::vector<EPoint> pts = to_epick(p);
+  // Zero area is checked before simplicity: a collinear polygon is also non-simple, and
+  // "zero area" is the more precise report. Consecutive vertices are distinct here.
+  bool collinear = true;
+  for (std::size_t i = 2; i < n && collinear; ++i) {
+    collinear = CGAL::collinear(pts[0], pts[1], pts[i]);
+  }
+  if (collinear) fail(what, "zero area (all " + std::to_string(n) + " vertices collinear)");
+  if (!CGAL::is_simple_2(pts.begin(), pts.end(), Epick())) {
+    fail(what, "not simple (edges cross or touch away from their shared vertices)");
+  }
+  Polygon out = p;
+  // Simple and not collinear, so the orientation is strictly clockwise or counter-clockwise.
+  if (CGAL::orientation_2(pts.begin(), pts.end(), Epick()) == CGAL::CLOCKWISE) {
+    std::reverse(out.vertices.begin(), out.vertices.end());
+  }
+  return out;
+}
+
+bool contains(const Polygon& p, const Point& x) {
+  check_query(x);
+  demand_finite(p, "contains: polygon");
+  return locate(p, x) != CGAL::ON_UNBOUNDED_SIDE;
+}
+
+bool contains(const Region& r, const Point& x) {
+  check_query(x);
+  demand_finite(r);
+  return region_contains(r, x);
+}
+
+bool contains(const RegionSet& s, const Point& x) {
+  check_query(x);
+  for (const Region& r : s) demand_finite(r);
+  for (const Region& r : s) {
+    if (region_contains(r, x)) return true;
+  }
+  return false;
+}
+
+}  // namespace rearm::geometry

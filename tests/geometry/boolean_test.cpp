@@ -1,0 +1,343 @@
+// Boolean operations against independent truth: area identities (inclusion-exclusion),
+// pointwise set membership decided by a double ray-casting oracle on the INPUT polygons
+// (samples near an input edge skipped), and hand-computed cases. Seeded random star-shaped
+// polygons (simple by construction) and rectangles.
+#include "geometry/boolean.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "core/error.h"
+#include "core/rng.h"
+
+namespace rearm::geometry {
+namespace {
+
+// Relative tolerance of the area identities: results are exact sets rounded to doubles.
+constexpr double kAreaRelTol = 1e-9;
+// Hand-case areas are exact up to a few roundings.
+constexpr double kTol = 1e-12;
+// Samples closer than this to an input edge are skipped: the oracle works in doubles.
+constexpr double kEdgeClearance = 1e-9;
+constexpr int kSamplesPerCase = 250;
+
+Polygon poly(std::vector<Point> v) { return Polygon{std::move(v)}; }
+Polygon rect(double x0, double y0, double x1, double y1) {
+  return poly({{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}});
+}
+Polygon square(double x0, double y0, double side) { return rect(x0, y0, x0 + side, y0 + side); }
+
+// Independent truth: even-odd ray casting in doubles.
+bool ray_cast_inside(const Polygon& p, const Point& x) {
+  bool inside = false;
+  for (std::size_t i = 0, n = p.size(), j = n - 1; i < n; j = i++) {
+    const Point& a = p.vertices[i];
+    const Point& b = p.vertices[j];
+    if ((a.y() > x.y()) != (b.y() > x.y())) {
+      const double xc = a.x() + (x.y() - a.y()) * (b.x() - a.x()) / (b.y() - a.y());
+      if (x.x() < xc) inside = !inside;
+    }
+  }
+  return inside;
+}
+
+double distance_to_boundary(const Polygon& p, const Point& x) {
+  double best = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0, n = p.size(); i < n; ++i) {
+    const Point a = p.vertices[i];
+    const Point d = p.vertices[(i + 1) % n] - a;
+    const double t = std::clamp((x - a).dot(d) / d.squaredNorm(), 0.0, 1.0);
+    best = std::min(best, (a + t * d - x).norm());
+  }
+  return best;
+}
+
+bool near_any_edge(const std::vector<Polygon>& inputs, const Point& x) {
+  for (const Polygon& p : inputs) {
+    if (distance_to_boundary(p, x) < kEdgeClearance) return true;
+  }
+  return false;
+}
+
+// Star-shaped around `c`: vertex k at angle 2 pi (k + u_k) / n with u_k in [0, 1/2), so
+// angles increase and every angular gap is below pi; hence simple by construction.
+Polygon random_star(Rng& rng, const Point& c, int n, double r_min, double r_max) {
+  std::vector<double> angles;
+  for (int k = 0; k < n; ++k) {
+    angles.push_back(2 * std::numbers::pi * (k + rng.uniform(0.0, 0.5)) / n);
+  }
+  Polygon p;
+  for (double a : angles) {
+    const double r = rng.uniform(r_min, r_max);
+    p.vertices.push_back(c + r * Point(std::cos(a), std::sin(a)));
+  }
+  return p;
+}
+
+Polygon random_rect(Rng& rng) {
+  const double x = rng.uniform(-2, 1), y = rng.uniform(-2, 1);
+  return rect(x, y, x + rng.uniform(0.1, 3), y + rng.uniform(0.1, 3));
+}
+
+// A random simple polygon near the origin: a star (3..24 vertices) or a rectangle.
+Polygon random_shape(Rng& rng) {
+  if (rng.bernoulli(0.4)) return random_rect(rng);
+  const Point c(rng.uniform(-1, 1), rng.uniform(-1, 1));
+  return random_star(rng, c, 3 + static_cast<int>(rng.index(22)), 0.3, 2.5);
+}
+
+// The orientation convention of Region: every boundary counter-clockwise.
+void expect_counter_clockwise(const RegionSet& s) {
+  for (const Region& r : s) {
+    EXPECT_GT(r.outer.signed_area(), 0);
+    for (const Polygon& h : r.holes) EXPECT_GT(h.signed_area(), 0);
+  }
+}
+
+std::size_t total_holes(const RegionSet& s) {
+  std::size_t n = 0;
+  for (const Region& r : s) n += r.holes.size();
+  return n;
+}
+
+TEST(BooleanTest, RandomPairsSatisfyAreaIdentitiesAndMembership) {
+  Rng rng(0x9e0b001);
+  int samples = 0;
+  for (int trial = 0; trial < 120; ++trial) {
+    SCOPED_TRACE("trial " + std::to_string(trial));
+    const Polygon a = random_shape(rng);
+    const Polygon b = random_shape(rng);
+    const RegionSet sa = to_set(a), sb = to_set(b);
+    const RegionSet u = unite(sa, sb), i = intersect(sa, sb), d = subtract(sa, sb);
+    expect_counter_clockwise(u);
+    expect_counter_clockwise(i);
+    expect_counter_clockwise(d);
+    const double area_a = a.area(), area_b = b.area();
+    const double scale = area_a + area_b;
+    EXPECT_NEAR(total_area(u) + total_area(i), area_a + area_b, kAreaRelTol * scale);
+    EXPECT_NEAR(total_area(d), area_a - total_area(i), kAreaRelTol * scale);
+    EXPECT_GE(total_area(i), 0);
+    EXPECT_EQ(intersects(sa, sb), total_area(i) > 0);  // touching has probability zero
+    const std::vector<Polygon> inputs{a, b};
+    for (int k = 0; k < kSamplesPerCase; ++k) {
+      const Point x(rng.uniform(-4.5, 4.5), rng.uniform(-4.5, 4.5));
+      if (near_any_edge(inputs, x)) continue;
+      const bool in_a = ray_cast_inside(a, x), in_b = ray_cast_inside(b, x);
+      ASSERT_EQ(contains(u, x), in_a || in_b) << x.transpose();
+      ASSERT_EQ(contains(i, x), in_a && in_b) << x.transpose();
+      ASSERT_EQ(contains(d, x), in_a && !in_b) << x.transpose();
+      ++samples;
+    }
+  }
+  EXPECT_GT(samples, 120 * 200);
+}
+
+// Differences produce holes; the results are fed back as inputs (regions with holes).
+TEST(BooleanTest, RandomHolesRoundTripThroughFurtherOperations) {
+  Rng rng(0x501e5);
+  int samples = 0;
+  for (int trial = 0; trial < 40; ++trial) {
+    SCOPED_TRACE("trial " + std::to_string(trial));
+    const Point c(rng.uniform(-1, 1), rng.uniform(-1, 1));
+    const Polygon outer = random_star(rng, c, 8 + static_cast<int>(rng.index(16)), 2.5, 3.5);
+    const Polygon inner = random_star(rng, c, 3 + static_cast<int>(rng.index(10)), 0.5, 1.5);
+    const Polygon other = random_shape(rng);
+    const RegionSet ring = subtract(to_set(outer), to_set(inner));
+    ASSERT_EQ(ring.size(), 1u);
+    ASSERT_EQ(ring[0].holes.size(), 1u);
+    EXPECT_NEAR(total_area(ring), outer.area() - inner.area(), kAreaRelTol * outer.area());
+    const RegionSet u = unite(ring, to_set(other)), i = intersect(ring, to_set(other));
+    const double scale = outer.area() + other.area();
+    EXPECT_NEAR(total_area(u) + total_area(i), total_area(ring) + other.area(),
+                kAreaRelTol * scale);
+    expect_counter_clockwise(u);
+    const std::vector<Polygon> inputs{outer, inner, other};
+    for (int k = 0; k < kSamplesPerCase; ++k) {
+      const Point x = c + Point(rng.uniform(-4, 4), rng.uniform(-4, 4));
+      if (near_any_edge(inputs, x)) continue;
+      const bool in_ring = ray_cast_inside(outer, x) && !ray_cast_inside(inner, x);
+      const bool in_other = ray_cast_inside(other, x);
+      ASSERT_EQ(contains(ring, x), in_ring) << x.transpose();
+      ASSERT_EQ(contains(u, x), in_ring || in_other) << x.transpose();
+      ASSERT_EQ(contains(i, x), in_ring && in_other) << x.transpose();
+      ++samples;
+    }
+  }
+  EXPECT_GT(samples, 40 * 200);
+}
+
+TEST(BooleanTest, RandomUniteAllMatchesMembership) {
+  Rng rng(0xa11);
+  for (int trial = 0; trial < 30; ++trial) {
+    SCOPED_TRACE("trial " + std::to_string(trial));
+    std::vector<Polygon> ps;
+    const int n = 2 + static_cast<int>(rng.index(7));
+    double sum = 0, largest = 0;
+    for (int k = 0; k < n; ++k) {
+      ps.push_back(random_shape(rng));
+      sum += ps.back().area();
+      largest = std::max(largest, ps.back().area());
+    }
+    const RegionSet u = unite_all(ps);
+    expect_counter_clockwise(u);
+    EXPECT_LE(total_area(u), sum * (1 + kAreaRelTol));
+    EXPECT_GE(total_area(u), largest * (1 - kAreaRelTol));
+    // Pairwise unite gives the same set.
+    RegionSet folded = to_set(ps[0]);
+    for (int k = 1; k < n; ++k) folded = unite(folded, to_set(ps[k]));
+    EXPECT_NEAR(total_area(u), total_area(folded), kAreaRelTol * sum);
+    for (int k = 0; k < kSamplesPerCase; ++k) {
+      const Point x(rng.uniform(-4.5, 4.5), rng.uniform(-4.5, 4.5));
+      if (near_any_edge(ps, x)) continue;
+      bool in_any = false;
+      for (const Polygon& p : ps) in_any = in_any || ray_cast_inside(p, x);
+      ASSERT_EQ(contains(u, x), in_any) << x.transpose();
+    }
+  }
+}
+
+TEST(BooleanTest, OverlappingSquares) {
+  const RegionSet a = to_set(square(0, 0, 2)), b = to_set(square(1, 1, 2));
+  const RegionSet u = unite(a, b);
+  ASSERT_EQ(u.size(), 1u);
+  EXPECT_EQ(u[0].holes.size(), 0u);
+  EXPECT_EQ(u[0].outer.size(), 8u);
+  EXPECT_NEAR(total_area(u), 7.0, kTol);
+  const RegionSet i = intersect(a, b);
+  ASSERT_EQ(i.size(), 1u);
+  EXPECT_NEAR(total_area(i), 1.0, kTol);
+  EXPECT_TRUE(contains(i, Point(1.5, 1.5)));
+  EXPECT_FALSE(contains(i, Point(0.5, 0.5)));
+  const RegionSet d = subtract(a, b);
+  ASSERT_EQ(d.size(), 1u);
+  EXPECT_NEAR(total_area(d), 3.0, kTol);
+  EXPECT_EQ(d[0].outer.size(), 6u);  // an L
+  EXPECT_TRUE(intersects(a, b));
+}
+
+TEST(BooleanTest, SubtractingAnInnerSquareLeavesAHole) {
+  const RegionSet d = subtract(to_set(square(0, 0, 2)), to_set(square(0.5, 0.5, 1)));
+  ASSERT_EQ(d.size(), 1u);
+  ASSERT_EQ(d[0].holes.size(), 1u);
+  EXPECT_NEAR(d[0].area(), 3.0, kTol);
+  EXPECT_NEAR(d[0].outer.area(), 4.0, kTol);
+  EXPECT_NEAR(d[0].holes[0].area(), 1.0, kTol);
+  expect_counter_clockwise(d);
+  EXPECT_FALSE(contains(d, Point(1, 1)));
+  EXPECT_TRUE(contains(d, Point(0.25, 1)));
+  EXPECT_TRUE(contains(d, Point(0.5, 1)));  // hole boundary
+  // Filling the hole restores the square.
+  const RegionSet filled = unite(d, to_set(square(0.5, 0.5, 1)));
+  ASSERT_EQ(filled.size(), 1u);
+  EXPECT_EQ(filled[0].holes.size(), 0u);
+  EXPECT_NEAR(total_area(filled), 4.0, kTol);
+  // A square inside the hole is disjoint from the ring.
+  EXPECT_FALSE(intersects(d, to_set(square(0.75, 0.75, 0.5))));
+  EXPECT_TRUE(intersects(d, to_set(square(0.5, 0.5, 0.5))));  // touches the hole boundary
+}
+
+TEST(BooleanTest, DisjointSquares) {
+  const RegionSet a = to_set(square(0, 0, 1)), b = to_set(square(3, 0, 1));
+  const RegionSet u = unite(a, b);
+  EXPECT_EQ(u.size(), 2u);
+  EXPECT_NEAR(total_area(u), 2.0, kTol);
+  EXPECT_TRUE(intersect(a, b).empty());
+  EXPECT_NEAR(total_area(subtract(a, b)), 1.0, kTol);
+  EXPECT_FALSE(intersects(a, b));
+  // Containment without boundary contact, both ways.
+  EXPECT_TRUE(intersects(to_set(square(0, 0, 4)), to_set(square(1, 1, 1))));
+  EXPECT_TRUE(intersects(to_set(square(1, 1, 1)), to_set(square(0, 0, 4))));
+}
+
+TEST(BooleanTest, TouchingSquares) {
+  const RegionSet a = to_set(square(0, 0, 1)), b = to_set(square(1, 0, 1));
+  const RegionSet u = unite(a, b);
+  ASSERT_EQ(u.size(), 1u);
+  EXPECT_EQ(u[0].holes.size(), 0u);
+  EXPECT_NEAR(total_area(u), 2.0, kTol);
+  EXPECT_TRUE(intersects(a, b));
+  EXPECT_NEAR(total_area(intersect(a, b)), 0.0, kTol);  // regularized: the edge vanishes
+  // Touching at one corner only; a gap of one ulp does not touch.
+  EXPECT_TRUE(intersects(a, to_set(square(1, 1, 1))));
+  EXPECT_FALSE(intersects(a, to_set(square(std::nextafter(1.0, 2.0), 1, 1))));
+}
+
+// CGAL's boundaries are only relatively simple (a vertex may repeat); results are cut into
+// simple boundaries so that they are valid inputs again.
+TEST(BooleanTest, PinchedResultsAreSplitIntoValidRegions) {
+  const RegionSet corner = unite(to_set(square(0, 0, 1)), to_set(square(1, 1, 1)));
+  ASSERT_EQ(corner.size(), 2u);
+  EXPECT_NEAR(total_area(corner), 2.0, kTol);
+  expect_counter_clockwise(corner);
+  for (const Region& r : corner) EXPECT_NO_THROW(validated(r.outer));
+  const RegionSet again = unite(corner, to_set(square(5, 5, 1)));
+  EXPECT_EQ(again.size(), 3u);
+  EXPECT_NEAR(total_area(again), 3.0, kTol);
+  EXPECT_TRUE(contains(corner, Point(1, 1)));
+  // Two holes touching at a corner.
+  const RegionSet holes =
+      subtract(to_set(square(0, 0, 4)), unite(to_set(square(1, 1, 1)), to_set(square(2, 2, 1))));
+  ASSERT_EQ(holes.size(), 1u);
+  EXPECT_EQ(holes[0].holes.size(), 2u);
+  EXPECT_NEAR(total_area(holes), 14.0, kTol);
+  expect_counter_clockwise(holes);
+  for (const Polygon& h : holes[0].holes) EXPECT_NO_THROW(validated(h));
+  const RegionSet cut = subtract(holes, to_set(rect(0, 0, 4, 0.5)));
+  EXPECT_NEAR(total_area(cut), 12.0, kTol);
+  EXPECT_FALSE(contains(cut, Point(1.5, 1.5)));
+  EXPECT_TRUE(contains(cut, Point(2, 2)));
+}
+
+TEST(BooleanTest, UniteAllChainOfThreeRectangles) {
+  // Pairwise overlaps 0.5 (first, second) and 0.25 (second, third); first and third apart.
+  const std::vector<Polygon> chain{rect(0, 0, 2, 1), rect(1, 0.5, 3, 1.5), rect(2.5, 0, 4.5, 1)};
+  const RegionSet u = unite_all(chain);
+  ASSERT_EQ(u.size(), 1u);
+  EXPECT_EQ(u[0].holes.size(), 0u);
+  EXPECT_NEAR(total_area(u), 6.0 - 0.75, kTol);
+  expect_counter_clockwise(u);
+}
+
+TEST(BooleanTest, UniteAllKeepsEnclosedHoles) {
+  // Four bars forming a frame around [1,2]^2, given clockwise and counter-clockwise.
+  Polygon left = rect(0, 0, 1, 3);
+  std::reverse(left.vertices.begin(), left.vertices.end());
+  const RegionSet u = unite_all({rect(0, 0, 3, 1), rect(2, 0, 3, 3), rect(0, 2, 3, 3), left});
+  ASSERT_EQ(u.size(), 1u);
+  ASSERT_EQ(u[0].holes.size(), 1u);
+  EXPECT_NEAR(total_area(u), 8.0, kTol);
+  EXPECT_NEAR(u[0].holes[0].area(), 1.0, kTol);
+  expect_counter_clockwise(u);
+  EXPECT_EQ(total_holes(unite_all({})), 0u);
+  EXPECT_TRUE(unite_all({}).empty());
+}
+
+TEST(BooleanTest, InvalidInputsAreRejectedWithTheirPlace) {
+  const Polygon bow_tie = poly({{0, 0}, {1, 1}, {1, 0}, {0, 1}});
+  const RegionSet good = to_set(square(0, 0, 1));
+  EXPECT_THROW(to_set(bow_tie), Error);
+  try {
+    unite(good, RegionSet{Region{bow_tie, {}}});
+    ADD_FAILURE() << "unite accepted a bow-tie";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("unite: second region 0"), std::string::npos) << e.what();
+  }
+  try {
+    unite_all({square(0, 0, 1), poly({{0, 0}, {1, 0}})});
+    ADD_FAILURE() << "unite_all accepted a two-vertex polygon";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("unite_all: polygon 1"), std::string::npos) << e.what();
+  }
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(intersects(good, RegionSet{Region{square(0, 0, 1), {square(nan, 0, 0.5)}}}), Error);
+  EXPECT_THROW(subtract(good, RegionSet{Region{square(0, 0, 1), {poly({})}}}), Error);
+}
+
+}  // namespace
+}  // namespace rearm::geometry
