@@ -15,9 +15,15 @@
 
 #include "core/error.h"
 #include "core/rng.h"
+#include "support/geometry_oracle.h"
 
 namespace rearm::geometry {
 namespace {
+
+using test_support::boundary_distance;
+using test_support::random_star;
+using test_support::ray_cast_inside;
+using test_support::segment_distance;
 
 // Relative tolerance of the area identities: results are exact sets rounded to doubles.
 constexpr double kAreaRelTol = 1e-9;
@@ -33,51 +39,11 @@ Polygon rect(double x0, double y0, double x1, double y1) {
 }
 Polygon square(double x0, double y0, double side) { return rect(x0, y0, x0 + side, y0 + side); }
 
-// Independent truth: even-odd ray casting in doubles.
-bool ray_cast_inside(const Polygon& p, const Point& x) {
-  bool inside = false;
-  for (std::size_t i = 0, n = p.size(), j = n - 1; i < n; j = i++) {
-    const Point& a = p.vertices[i];
-    const Point& b = p.vertices[j];
-    if ((a.y() > x.y()) != (b.y() > x.y())) {
-      const double xc = a.x() + (x.y() - a.y()) * (b.x() - a.x()) / (b.y() - a.y());
-      if (x.x() < xc) inside = !inside;
-    }
-  }
-  return inside;
-}
-
-double distance_to_boundary(const Polygon& p, const Point& x) {
-  double best = std::numeric_limits<double>::infinity();
-  for (std::size_t i = 0, n = p.size(); i < n; ++i) {
-    const Point a = p.vertices[i];
-    const Point d = p.vertices[(i + 1) % n] - a;
-    const double t = std::clamp((x - a).dot(d) / d.squaredNorm(), 0.0, 1.0);
-    best = std::min(best, (a + t * d - x).norm());
-  }
-  return best;
-}
-
 bool near_any_edge(const std::vector<Polygon>& inputs, const Point& x) {
   for (const Polygon& p : inputs) {
-    if (distance_to_boundary(p, x) < kEdgeClearance) return true;
+    if (boundary_distance(p, x) < kEdgeClearance) return true;
   }
   return false;
-}
-
-// Star-shaped around `c`: vertex k at angle 2 pi (k + u_k) / n with u_k in [0, 1/2), so
-// angles increase and every angular gap is below pi; hence simple by construction.
-Polygon random_star(Rng& rng, const Point& c, int n, double r_min, double r_max) {
-  std::vector<double> angles;
-  for (int k = 0; k < n; ++k) {
-    angles.push_back(2 * std::numbers::pi * (k + rng.uniform(0.0, 0.5)) / n);
-  }
-  Polygon p;
-  for (double a : angles) {
-    const double r = rng.uniform(r_min, r_max);
-    p.vertices.push_back(c + r * Point(std::cos(a), std::sin(a)));
-  }
-  return p;
 }
 
 Polygon random_rect(Rng& rng) {
@@ -89,7 +55,7 @@ Polygon random_rect(Rng& rng) {
 Polygon random_shape(Rng& rng) {
   if (rng.bernoulli(0.4)) return random_rect(rng);
   const Point c(rng.uniform(-1, 1), rng.uniform(-1, 1));
-  return random_star(rng, c, 3 + static_cast<int>(rng.index(22)), 0.3, 2.5);
+  return random_star(rng, 3 + static_cast<int>(rng.index(22)), 0.3, 2.5, c, 0.0, 0.5);
 }
 
 // The orientation convention of Region: every boundary counter-clockwise.
@@ -145,8 +111,10 @@ TEST(BooleanTest, RandomHolesRoundTripThroughFurtherOperations) {
   for (int trial = 0; trial < 40; ++trial) {
     SCOPED_TRACE("trial " + std::to_string(trial));
     const Point c(rng.uniform(-1, 1), rng.uniform(-1, 1));
-    const Polygon outer = random_star(rng, c, 8 + static_cast<int>(rng.index(16)), 2.5, 3.5);
-    const Polygon inner = random_star(rng, c, 3 + static_cast<int>(rng.index(10)), 0.5, 1.5);
+    const Polygon outer =
+        random_star(rng, 8 + static_cast<int>(rng.index(16)), 2.5, 3.5, c, 0.0, 0.5);
+    const Polygon inner =
+        random_star(rng, 3 + static_cast<int>(rng.index(10)), 0.5, 1.5, c, 0.0, 0.5);
     const Polygon other = random_shape(rng);
     const RegionSet ring = subtract(to_set(outer), to_set(inner));
     ASSERT_EQ(ring.size(), 1u);

@@ -12,9 +12,15 @@
 #include "core/error.h"
 #include "core/rng.h"
 #include "geometry/partition.h"
+#include "support/geometry_oracle.h"
 
 namespace rearm::geometry {
 namespace {
+
+using test_support::boundary_distance;
+using test_support::random_star;
+using test_support::ray_cast_inside;
+using test_support::segment_distance;
 
 // Sample points per case within distance r of the boundary, and uniform points around it.
 constexpr int kNearSamples = 300;
@@ -23,17 +29,6 @@ constexpr int kFarSamples = 300;
 constexpr double kRelSlack = 1e-9;
 
 Polygon make(std::initializer_list<Point> pts) { return Polygon{std::vector<Point>(pts)}; }
-
-// Star-shaped simple polygon around the origin: sorted jittered angles, random radii.
-Polygon random_star(Rng& rng, int n, double r_min, double r_max) {
-  Polygon p;
-  for (int i = 0; i < n; ++i) {
-    const double a = 2 * std::numbers::pi * (i + rng.uniform(0.05, 0.95)) / n;
-    const double rho = rng.uniform(r_min, r_max);
-    p.vertices.emplace_back(rho * std::cos(a), rho * std::sin(a));
-  }
-  return p;
-}
 
 // Convex: points of an ellipse at sorted jittered angles.
 Polygon random_convex(Rng& rng, int n) {
@@ -48,45 +43,17 @@ Polygon random_convex(Rng& rng, int n) {
 
 double cross(const Point& a, const Point& b) { return a.x() * b.y() - a.y() * b.x(); }
 
-double segment_distance(const Point& a, const Point& b, const Point& x) {
-  const Point d = b - a;
-  const double t = std::clamp((x - a).dot(d) / d.squaredNorm(), 0.0, 1.0);
-  return (a + t * d - x).norm();
-}
-
-double boundary_distance(const Polygon& p, const Point& x) {
-  double best = std::numeric_limits<double>::infinity();
-  for (std::size_t i = 0, n = p.size(); i < n; ++i) {
-    best = std::min(best, segment_distance(p.vertices[i], p.vertices[(i + 1) % n], x));
-  }
-  return best;
-}
-
-// Even-odd crossing parity of one ring.
-bool crossing_parity(const Polygon& p, const Point& x) {
-  bool in = false;
-  for (std::size_t i = 0, n = p.size(), j = n - 1; i < n; j = i++) {
-    const Point& a = p.vertices[i];
-    const Point& b = p.vertices[j];
-    if ((a.y() > x.y()) != (b.y() > x.y()) &&
-        x.x() < (b.x() - a.x()) * (x.y() - a.y()) / (b.y() - a.y()) + a.x()) {
-      in = !in;
-    }
-  }
-  return in;
-}
-
 // Distance from x to the closed polygon (0 inside), brute force.
 double polygon_distance(const Polygon& p, const Point& x) {
-  return crossing_parity(p, x) ? 0 : boundary_distance(p, x);
+  return ray_cast_inside(p, x) ? 0 : boundary_distance(p, x);
 }
 
 // Inside a set of disjoint regions with holes: even-odd over every ring.
 bool inside_set(const RegionSet& s, const Point& x) {
   bool in = false;
   for (const Region& r : s) {
-    in ^= crossing_parity(r.outer, x);
-    for (const Polygon& h : r.holes) in ^= crossing_parity(h, x);
+    in ^= ray_cast_inside(r.outer, x);
+    for (const Polygon& h : r.holes) in ^= ray_cast_inside(h, x);
   }
   return in;
 }

@@ -8,39 +8,20 @@
 
 #include "core/error.h"
 #include "core/rng.h"
+#include "support/geometry_oracle.h"
 
 namespace rearm::geometry {
 namespace {
+
+using test_support::boundary_distance;
+using test_support::random_star;
+using test_support::ray_cast_inside;
+using test_support::segment_distance;
 
 // Boundary samples per edge for the brute-force truth.
 constexpr int kSamplesPerEdge = 4000;
 
 Polygon unit_square() { return Polygon{{Point(0, 0), Point(1, 0), Point(1, 1), Point(0, 1)}}; }
-
-// Star-shaped simple polygon around the origin: sorted jittered angles, random radii.
-Polygon random_star(Rng& rng, int n, double r_min, double r_max) {
-  Polygon p;
-  for (int i = 0; i < n; ++i) {
-    const double a = 2 * std::numbers::pi * (i + rng.uniform(0.05, 0.95)) / n;
-    const double rho = rng.uniform(r_min, r_max);
-    p.vertices.emplace_back(rho * std::cos(a), rho * std::sin(a));
-  }
-  return p;
-}
-
-// Even-odd crossing test (independent of the library's exact predicate).
-bool inside_crossing(const Polygon& p, const Point& x) {
-  bool in = false;
-  for (std::size_t i = 0, n = p.size(), j = n - 1; i < n; j = i++) {
-    const Point& a = p.vertices[i];
-    const Point& b = p.vertices[j];
-    if ((a.y() > x.y()) != (b.y() > x.y()) &&
-        x.x() < (b.x() - a.x()) * (x.y() - a.y()) / (b.y() - a.y()) + a.x()) {
-      in = !in;
-    }
-  }
-  return in;
-}
 
 // Minimum distance from x to points sampled densely along the boundary, and the spacing.
 double sampled_boundary_distance(const Polygon& p, const Point& x, double* spacing) {
@@ -108,7 +89,7 @@ TEST(DistanceTest, RandomPolygonsAgainstDenseSampling) {
       double spacing_at_point = 0;
       EXPECT_LT(sampled_boundary_distance(p, n.point, &spacing_at_point), spacing_at_point);
       const double d = distance(p, x);
-      if (inside_crossing(p, x)) {
+      if (ray_cast_inside(p, x)) {
         ++inside;
         EXPECT_EQ(d, 0);
       } else {

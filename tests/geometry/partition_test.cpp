@@ -9,9 +9,15 @@
 
 #include "core/error.h"
 #include "core/rng.h"
+#include "support/geometry_oracle.h"
 
 namespace rearm::geometry {
 namespace {
+
+using test_support::boundary_distance;
+using test_support::random_star;
+using test_support::ray_cast_inside;
+using test_support::segment_distance;
 
 // Relative tolerance on the total area of the pieces (they share the input's vertices, so
 // only the shoelace rounding differs).
@@ -21,30 +27,7 @@ constexpr int kSamples = 400;
 
 Polygon make(std::initializer_list<Point> pts) { return Polygon{std::vector<Point>(pts)}; }
 
-Polygon random_star(Rng& rng, int n, double r_min, double r_max) {
-  Polygon p;
-  for (int i = 0; i < n; ++i) {
-    const double a = 2 * std::numbers::pi * (i + rng.uniform(0.05, 0.95)) / n;
-    const double rho = rng.uniform(r_min, r_max);
-    p.vertices.emplace_back(rho * std::cos(a), rho * std::sin(a));
-  }
-  return p;
-}
-
 double cross(const Point& a, const Point& b) { return a.x() * b.y() - a.y() * b.x(); }
-
-bool inside_crossing(const Polygon& p, const Point& x) {
-  bool in = false;
-  for (std::size_t i = 0, n = p.size(), j = n - 1; i < n; j = i++) {
-    const Point& a = p.vertices[i];
-    const Point& b = p.vertices[j];
-    if ((a.y() > x.y()) != (b.y() > x.y()) &&
-        x.x() < (b.x() - a.x()) * (x.y() - a.y()) / (b.y() - a.y()) + a.x()) {
-      in = !in;
-    }
-  }
-  return in;
-}
 
 // Strictly inside a convex counter-clockwise polygon (by more than `slack` in cross product).
 bool strictly_inside_convex(const Polygon& p, const Point& x, double slack) {
@@ -102,7 +85,7 @@ void check_partition(const Polygon& p, const std::vector<Polygon>& pieces, Rng& 
   int sampled = 0;
   while (sampled < kSamples) {
     const Point x(rng.uniform(lo.x(), hi.x()), rng.uniform(lo.y(), hi.y()));
-    if (!inside_crossing(p, x)) continue;
+    if (!ray_cast_inside(p, x)) continue;
     ++sampled;
     int strict = 0, closed = 0;
     for (const Polygon& q : pieces) {

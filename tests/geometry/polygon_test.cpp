@@ -14,9 +14,15 @@
 
 #include "core/error.h"
 #include "core/rng.h"
+#include "support/geometry_oracle.h"
 
 namespace rearm::geometry {
 namespace {
+
+using test_support::boundary_distance;
+using test_support::random_star;
+using test_support::ray_cast_inside;
+using test_support::segment_distance;
 
 // Measures of hand-built shapes are exact up to a few roundings.
 constexpr double kTol = 1e-12;
@@ -31,46 +37,6 @@ Polygon l_shape() { return poly({{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}}
 Polygon triangle() { return poly({{0, 0}, {4, 0}, {0, 3}}); }
 Polygon square(double x0, double y0, double side) {
   return poly({{x0, y0}, {x0 + side, y0}, {x0 + side, y0 + side}, {x0, y0 + side}});
-}
-
-// Independent truth: even-odd ray casting in doubles.
-bool ray_cast_inside(const Polygon& p, const Point& x) {
-  bool inside = false;
-  for (std::size_t i = 0, n = p.size(), j = n - 1; i < n; j = i++) {
-    const Point& a = p.vertices[i];
-    const Point& b = p.vertices[j];
-    if ((a.y() > x.y()) != (b.y() > x.y())) {
-      const double xc = a.x() + (x.y() - a.y()) * (b.x() - a.x()) / (b.y() - a.y());
-      if (x.x() < xc) inside = !inside;
-    }
-  }
-  return inside;
-}
-
-double distance_to_boundary(const Polygon& p, const Point& x) {
-  double best = std::numeric_limits<double>::infinity();
-  for (std::size_t i = 0, n = p.size(); i < n; ++i) {
-    const Point a = p.vertices[i];
-    const Point d = p.vertices[(i + 1) % n] - a;
-    const double t = std::clamp((x - a).dot(d) / d.squaredNorm(), 0.0, 1.0);
-    best = std::min(best, (a + t * d - x).norm());
-  }
-  return best;
-}
-
-// Star-shaped around `c`: vertex k at angle 2 pi (k + u_k) / n with u_k in [0, 1/2), so
-// angles increase and every angular gap is below pi; hence simple by construction.
-Polygon random_star(Rng& rng, const Point& c, int n, double r_min, double r_max) {
-  std::vector<double> angles;
-  for (int k = 0; k < n; ++k) {
-    angles.push_back(2 * std::numbers::pi * (k + rng.uniform(0.0, 0.5)) / n);
-  }
-  Polygon p;
-  for (double a : angles) {
-    const double r = rng.uniform(r_min, r_max);
-    p.vertices.push_back(c + r * Point(std::cos(a), std::sin(a)));
-  }
-  return p;
 }
 
 // Expects validated() to throw a rearm::Error whose message has every listed fragment.
@@ -219,11 +185,11 @@ TEST(PolygonTest, ContainsMatchesRayCastingOnRandomStars) {
   for (int trial = 0; trial < 100; ++trial) {
     const Point c(rng.uniform(-5, 5), rng.uniform(-5, 5));
     const int n = 3 + static_cast<int>(rng.index(30));
-    const Polygon p = validated(random_star(rng, c, n, 0.2, 3.0));
+    const Polygon p = validated(random_star(rng, n, 0.2, 3.0, c, 0.0, 0.5));
     EXPECT_GT(p.area(), 0);
     for (int k = 0; k < 200; ++k) {
       const Point x = c + Point(rng.uniform(-3.5, 3.5), rng.uniform(-3.5, 3.5));
-      if (distance_to_boundary(p, x) < kEdgeClearance) continue;
+      if (boundary_distance(p, x) < kEdgeClearance) continue;
       ASSERT_EQ(contains(p, x), ray_cast_inside(p, x)) << "trial " << trial;
       ++checked;
     }

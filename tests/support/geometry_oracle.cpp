@@ -1,0 +1,52 @@
+#include "support/geometry_oracle.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace rearm::test_support {
+
+using geometry::Point;
+using geometry::Polygon;
+
+Polygon random_star(Rng& rng, int n, double r_min, double r_max, const Point& c, double jitter_lo,
+                    double jitter_hi) {
+  Polygon p;
+  for (int k = 0; k < n; ++k) {
+    const double a = 2 * std::numbers::pi * (k + rng.uniform(jitter_lo, jitter_hi)) / n;
+    const double rho = rng.uniform(r_min, r_max);
+    p.vertices.push_back(c + rho * Point(std::cos(a), std::sin(a)));
+  }
+  return p;
+}
+
+bool ray_cast_inside(const Polygon& p, const Point& x) {
+  bool inside = false;
+  for (std::size_t i = 0, n = p.size(), j = n - 1; i < n; j = i++) {
+    const Point& a = p.vertices[i];
+    const Point& b = p.vertices[j];
+    if ((a.y() > x.y()) != (b.y() > x.y()) &&
+        x.x() < (b.x() - a.x()) * (x.y() - a.y()) / (b.y() - a.y()) + a.x()) {
+      inside = !inside;
+    }
+  }
+  return inside;
+}
+
+double segment_distance(const Point& a, const Point& b, const Point& x) {
+  const Point d = b - a;
+  const double len2 = d.squaredNorm();
+  const double t = len2 > 0 ? std::clamp((x - a).dot(d) / len2, 0.0, 1.0) : 0.0;
+  return (a + t * d - x).norm();
+}
+
+double boundary_distance(const Polygon& p, const Point& x) {
+  double best = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0, n = p.size(); i < n; ++i) {
+    best = std::min(best, segment_distance(p.vertices[i], p.vertices[(i + 1) % n], x));
+  }
+  return best;
+}
+
+}  // namespace rearm::test_support

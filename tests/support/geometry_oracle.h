@@ -1,0 +1,24 @@
+// Independent geometry for the geometry tests: random simple polygons and plain-double
+// point-in-polygon and distance computations that share no code with framework/geometry.
+#pragma once
+
+#include "core/rng.h"
+#include "geometry/polygon.h"
+
+namespace rearm::test_support {
+
+// Star-shaped simple polygon around c: one vertex per equal angular sector at a jittered
+// angle (fraction [jitter_lo, jitter_hi) of the sector), radius uniform in [r_min, r_max].
+geometry::Polygon random_star(Rng& rng, int n, double r_min, double r_max,
+                              const geometry::Point& c = geometry::Point::Zero(),
+                              double jitter_lo = 0.05, double jitter_hi = 0.95);
+
+// Even-odd ray casting in doubles (its verdict is unreliable within ~1e-12 of an edge).
+bool ray_cast_inside(const geometry::Polygon& p, const geometry::Point& x);
+
+// Distance from x to the segment [a, b] and to the polygon's boundary, brute force.
+double segment_distance(const geometry::Point& a, const geometry::Point& b,
+                        const geometry::Point& x);
+double boundary_distance(const geometry::Polygon& p, const geometry::Point& x);
+
+}  // namespace rearm::test_support
