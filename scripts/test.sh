@@ -18,6 +18,7 @@ ctest --test-dir "$BUILD" --no-tests=error --output-on-failure -j"$JOBS"
 ASAN_BUILD=${ASAN_BUILD:-build-asan}
 ASAN_TESTS="parser_test;formula_test;bdd_test;letter_set_test;automaton_io_test"
 ASAN_TESTS+=";translate_lasso_test;mission_controller_test;mission_property_test;cli_test"
+ASAN_TESTS+=";polygon_test;boolean_test;dilation_test;partition_test;distance_test"
 cmake -S . -B "$ASAN_BUILD" -DCMAKE_BUILD_TYPE=Debug -DREARM_SANITIZE=ON -DREARM_WERROR=ON \
   -DREARM_BUILD_TESTS=ON -DREARM_BUILD_BENCH=OFF "-DREARM_TESTS=$ASAN_TESTS"
 cmake --build "$ASAN_BUILD" -j"$JOBS"
