@@ -130,9 +130,12 @@ std::optional<MissionController::Choice> MissionController::choose(
     const bool candidate = in_vf ? (e.accepting && e.in_cycle) : graph_->d_f(e.dst) + 1 == d;
     if (!candidate) continue;
     if (e.letters.test(held_)) return Choice{i, held_};  // nothing to do
-    const ltl::LetterSet usable = e.letters & ~excluded_;
-    const std::size_t letter = usable.next(1);  // an action (letter 0 cannot be performed)
-    if (letter >= usable.universe()) continue;
+    // The lowest feasible action letter (letter 0 cannot be performed).
+    std::size_t letter = e.letters.next(1);
+    while (letter < e.letters.universe() && excluded_.test(letter)) {
+      letter = e.letters.next(letter + 1);
+    }
+    if (letter >= e.letters.universe()) continue;
     if (!best || letter < best->letter) best = Choice{i, letter};
   }
   return best;
@@ -183,12 +186,13 @@ void MissionController::report_success() {
 
 std::vector<std::uint32_t> MissionController::read(const std::vector<std::uint32_t>& states,
                                                    std::size_t letter) const {
-  std::vector<bool> in(nba_.num_states(), false);
+  std::vector<char>& in = read_mark_;  // scratch, kept between calls: no allocation
+  in.assign(nba_.num_states(), 0);
   std::vector<std::uint32_t> out;
   for (std::uint32_t q : states) {
     for (const auto& e : nba_.out[q]) {
       if (e.guard.test(letter) && !in[e.dst]) {
-        in[e.dst] = true;
+        in[e.dst] = 1;
         out.push_back(e.dst);
       }
     }
@@ -196,7 +200,7 @@ std::vector<std::uint32_t> MissionController::read(const std::vector<std::uint32
   for (std::size_t i = 0; i < out.size(); ++i) {  // holding the letter longer
     for (const auto& e : nba_.out[out[i]]) {
       if (e.guard.test(letter) && !in[e.dst]) {
-        in[e.dst] = true;
+        in[e.dst] = 1;
         out.push_back(e.dst);
       }
     }

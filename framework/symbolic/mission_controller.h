@@ -92,6 +92,7 @@ class MissionController {
   std::size_t held_ = 0;         // held letter (0: none)
   // Automaton states some run on the word performed so far can be in (all branches).
   std::vector<std::uint32_t> reachable_;
+  mutable std::vector<char> read_mark_;  // scratch of read()
   ltl::LetterSet excluded_;
   std::unique_ptr<MissionGraph> graph_;
   std::uint32_t node_ = 0;

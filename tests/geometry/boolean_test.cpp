@@ -23,7 +23,6 @@ namespace {
 using test_support::boundary_distance;
 using test_support::random_star;
 using test_support::ray_cast_inside;
-using test_support::segment_distance;
 
 // Relative tolerance of the area identities: results are exact sets rounded to doubles.
 constexpr double kAreaRelTol = 1e-9;

@@ -20,7 +20,6 @@ namespace {
 using test_support::boundary_distance;
 using test_support::random_star;
 using test_support::ray_cast_inside;
-using test_support::segment_distance;
 
 // Sample points per case within distance r of the boundary, and uniform points around it.
 constexpr int kNearSamples = 300;

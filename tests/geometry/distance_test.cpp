@@ -14,10 +14,8 @@
 namespace rearm::geometry {
 namespace {
 
-using test_support::boundary_distance;
 using test_support::random_star;
 using test_support::ray_cast_inside;
-using test_support::segment_distance;
 
 // Boundary samples per edge for the brute-force truth.
 constexpr int kSamplesPerEdge = 4000;

@@ -14,10 +14,8 @@
 namespace rearm::geometry {
 namespace {
 
-using test_support::boundary_distance;
 using test_support::random_star;
 using test_support::ray_cast_inside;
-using test_support::segment_distance;
 
 // Relative tolerance on the total area of the pieces (they share the input's vertices, so
 // only the shoelace rounding differs).

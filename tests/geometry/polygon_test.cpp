@@ -22,7 +22,6 @@ namespace {
 using test_support::boundary_distance;
 using test_support::random_star;
 using test_support::ray_cast_inside;
-using test_support::segment_distance;
 
 // Measures of hand-built shapes are exact up to a few roundings.
 constexpr double kTol = 1e-12;
