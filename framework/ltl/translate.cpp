@@ -712,6 +712,25 @@ void merge_tgba_states(const A& alpha, Tgba<A>& g) {
   g = std::move(h);
 }
 
+// An SCC of the generalized automaton can hold an accepting run only if it has an inner
+// edge and its inner edges together carry every mark.
+template <class A>
+bool accepting_scc(const Tgba<A>& g, const std::vector<std::uint32_t>& members,
+                   const std::vector<std::uint32_t>& comp) {
+  Marks seen;
+  bool cyclic = false;
+  for (std::uint32_t s : members) {
+    for (const auto& e : g.out[s]) {
+      if (comp[e.dst] == comp[s]) {
+        cyclic = true;
+        seen |= e.marks;
+      }
+    }
+  }
+  for (std::size_t a = 0; a < g.num_acc && cyclic; ++a) cyclic = seen.test(a);
+  return cyclic;
+}
+
 // ---------------------------------------------------------------------------------------
 // Stage 4: degeneralization (GO §4) with SCC information, then Büchi simplifications.
 template <class A>
@@ -723,23 +742,10 @@ Automaton<A> degeneralize(const A& alpha, const Tgba<A>& g, Clock& clock) {
   std::uint32_t count = 0;
   const auto comp = strongly_connected_components(
       g.out, [](const auto& e) { return e.dst; }, &count);
-  // An SCC can be accepting only if its inner edges carry every mark.
-  std::vector<Marks> seen(count);
-  std::vector<bool> cyclic(count, false);
-  for (std::uint32_t s = 0; s < n; ++s) {
-    for (const auto& e : g.out[s]) {
-      if (comp[e.dst] == comp[s]) {
-        seen[comp[s]] |= e.marks;
-        cyclic[comp[s]] = true;
-      }
-    }
-  }
+  std::vector<std::vector<std::uint32_t>> members(count);
+  for (std::uint32_t s = 0; s < n; ++s) members[comp[s]].push_back(s);
   std::vector<bool> acc_scc(count, false);
-  for (std::uint32_t c = 0; c < count; ++c) {
-    bool all = cyclic[c];
-    for (std::size_t a = 0; a < k && all; ++a) all = seen[c].test(a);
-    acc_scc[c] = all;
-  }
+  for (std::uint32_t c = 0; c < count; ++c) acc_scc[c] = accepting_scc(g, members[c], comp);
   // BA states (tgba state, level); level k means "every set seen": accepting.
   std::unordered_map<std::uint64_t, std::uint32_t> ids;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> todo;
@@ -846,18 +852,7 @@ Automaton<A> translate_with(A alpha, const Formula& input, const TranslateOption
     prune(
         g, [](const auto& e) { return e.dst; }, [](auto& e, std::uint32_t d) { e.dst = d; },
         [&](const std::vector<std::uint32_t>& members, const std::vector<std::uint32_t>& c) {
-          Marks seen;
-          bool cyclic = false;
-          for (std::uint32_t s : members) {
-            for (const auto& e : g.out[s]) {
-              if (c[e.dst] == c[s]) {
-                cyclic = true;
-                seen |= e.marks;
-              }
-            }
-          }
-          for (std::size_t a = 0; a < g.num_acc && cyclic; ++a) cyclic = seen.test(a);
-          return cyclic;
+          return accepting_scc(g, members, c);
         });
     merge_tgba_states(alpha, g);
   }
