@@ -13,12 +13,15 @@ cmake --build "$BUILD" -j"$JOBS"
 ctest --test-dir "$BUILD" --no-tests=error --output-on-failure -j"$JOBS"
 
 # Sanitized run of the tests that feed arbitrary input (parser fuzzing, automaton readers,
-# the command line) and of the translator's and controller's property tests at reduced size
-# (REARM_TEST_SCALE).
+# the command line, scene and perception input), of the translator's and controller's
+# property tests and of the geometry and reactive tests, at reduced size (REARM_TEST_SCALE).
 ASAN_BUILD=${ASAN_BUILD:-build-asan}
 ASAN_TESTS="parser_test;formula_test;bdd_test;letter_set_test;automaton_io_test"
 ASAN_TESTS+=";translate_lasso_test;mission_controller_test;mission_property_test;cli_test"
-ASAN_TESTS+=";polygon_test;boolean_test;dilation_test;partition_test;distance_test"
+ASAN_TESTS+=";polygon_test;boolean_test;dilation_test;partition_test;distance_test;convex_test"
+ASAN_TESTS+=";world_test;sensor_test;semantic_map_test;perception_property_test"
+ASAN_TESTS+=";diffeomorphism_test;degenerate_input_test;local_freespace_test;navigation_test"
+ASAN_TESTS+=";grasp_test;kinematics_test;closed_loop_test"
 cmake -S . -B "$ASAN_BUILD" -DCMAKE_BUILD_TYPE=Debug -DREARM_SANITIZE=ON -DREARM_WERROR=ON \
   -DREARM_BUILD_TESTS=ON -DREARM_BUILD_BENCH=OFF "-DREARM_TESTS=$ASAN_TESTS"
 cmake --build "$ASAN_BUILD" -j"$JOBS"

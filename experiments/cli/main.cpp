@@ -13,6 +13,7 @@ using rearm::cli::Command;
 const Command kCommands[] = {
     {"translate", "translate an LTL formula into a Büchi automaton", &rearm::cli::run_translate},
     {"plan", "run the mission controller against a perfect executor", &rearm::cli::run_plan},
+    {"diffeo", "build and plot the diffeomorphism of a static scene", &rearm::cli::run_diffeo},
 };
 
 void print_help() {

@@ -5,7 +5,12 @@
 #include <sys/wait.h>
 
 #include <array>
+#include <cctype>
 #include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
 
 #include "ltl/automaton_io.h"
@@ -99,9 +104,9 @@ TEST(CliTest, BadInputGivesAClearErrorAndExitCode) {
 }
 
 TEST(CliTest, PlanPrintsThePaperExamplesActionLassos) {
-  const Result eq1 = run(
-      "plan --formula '<>(grasp(M1) && <>(release(M1,l2) && <>(grasp(M2) && "
-      "<>(release(M2,l3) && <>(grasp(M3) && <>release(M3,l1))))))'");
+  const Result eq1 =
+      run("plan --formula '<>(grasp(M1) && <>(release(M1,l2) && <>(grasp(M2) && "
+          "<>(release(M2,l3) && <>(grasp(M3) && <>release(M3,l1))))))'");
   ASSERT_EQ(eq1.code, 0) << eq1.out;
   EXPECT_EQ(eq1.out,
             "prefix: grasp(M1) release(M1,l2) grasp(M2) release(M2,l3) grasp(M3) "
@@ -143,6 +148,218 @@ TEST(CliTest, PlanRejectsBadInputWithAReason) {
   EXPECT_EQ(ap.code, 2);
   EXPECT_TRUE(contains(ap.out, "not an action predicate")) << ap.out;
   EXPECT_EQ(run("plan").code, 2);
+}
+
+// ---- rearm diffeo ----
+
+// A strict JSON syntax check (RFC 8259 grammar, no extensions): enough to know the file
+// parses, without a JSON library.
+class JsonChecker {
+ public:
+  explicit JsonChecker(const std::string& s) : s_(s) {}
+  bool ok() {
+    ws();
+    if (!value()) return false;
+    ws();
+    return i_ == s_.size();
+  }
+
+ private:
+  void ws() {
+    while (i_ < s_.size() && std::isspace(static_cast<unsigned char>(s_[i_]))) ++i_;
+  }
+  bool lit(const char* w) {
+    const std::string t(w);
+    if (s_.compare(i_, t.size(), t) != 0) return false;
+    i_ += t.size();
+    return true;
+  }
+  bool str() {
+    if (s_[i_] != '"') return false;
+    for (++i_; i_ < s_.size(); ++i_) {
+      if (s_[i_] == '\\') {
+        ++i_;
+      } else if (s_[i_] == '"') {
+        ++i_;
+        return true;
+      } else if (static_cast<unsigned char>(s_[i_]) < 0x20) {
+        return false;
+      }
+    }
+    return false;
+  }
+  bool num() {
+    const std::size_t start = i_;
+    if (s_[i_] == '-') ++i_;
+    while (i_ < s_.size() && (std::isdigit(static_cast<unsigned char>(s_[i_])) || s_[i_] == '.' ||
+                              s_[i_] == 'e' || s_[i_] == 'E' || s_[i_] == '+' || s_[i_] == '-')) {
+      ++i_;
+    }
+    if (i_ == start) return false;
+    char* end = nullptr;
+    const std::string t = s_.substr(start, i_ - start);
+    std::strtod(t.c_str(), &end);
+    return end == t.c_str() + t.size() && std::isdigit(static_cast<unsigned char>(t.back()));
+  }
+  bool value() {
+    if (i_ >= s_.size()) return false;
+    const char c = s_[i_];
+    if (c == '{' || c == '[') {
+      const char close = c == '{' ? '}' : ']';
+      ++i_;
+      ws();
+      if (i_ < s_.size() && s_[i_] == close) {
+        ++i_;
+        return true;
+      }
+      for (;;) {
+        ws();
+        if (c == '{') {
+          if (i_ >= s_.size() || !str()) return false;
+          ws();
+          if (i_ >= s_.size() || s_[i_++] != ':') return false;
+          ws();
+        }
+        if (!value()) return false;
+        ws();
+        if (i_ >= s_.size()) return false;
+        if (s_[i_] == ',') {
+          ++i_;
+        } else if (s_[i_] == close) {
+          ++i_;
+          return true;
+        } else {
+          return false;
+        }
+      }
+    }
+    if (c == '"') return str();
+    if (c == 't') return lit("true");
+    if (c == 'f') return lit("false");
+    if (c == 'n') return lit("null");
+    return num();
+  }
+  const std::string& s_;
+  std::size_t i_ = 0;
+};
+
+std::string temp_dir() {
+  std::string t = ::testing::TempDir() + "rearm_diffeo_XXXXXX";
+  EXPECT_NE(mkdtemp(t.data()), nullptr);
+  return t;
+}
+
+std::string slurp(const std::string& path) {
+  std::ifstream f(path, std::ios::binary);
+  std::ostringstream s;
+  s << f.rdbuf();
+  return s.str();
+}
+
+// The command looks for a python3 with matplotlib the same way.
+bool have_matplotlib() {
+  const char* env = std::getenv("REARM_PYTHON");
+  for (const std::string& py :
+       {std::string(env ? env : ""), std::string("python3"), std::string("/usr/bin/python3")}) {
+    if (py.empty()) continue;
+    if (std::system(("'" + py + "' -c 'import matplotlib' > /dev/null 2>&1").c_str()) == 0) {
+      return true;
+    }
+  }
+  return false;
+}
+
+TEST(CliTest, DiffeoWritesTheJsonAndThePlots) {
+  const std::string dir = temp_dir();
+  const Result r =
+      run("diffeo experiments/scenes/diffeo_demo.yaml --out " + dir + " --starts 2 --seed 5");
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_TRUE(contains(r.out, "paths: 3/3 reached the goal")) << r.out;
+  const std::string json = slurp(dir + "/diffeo.json");
+  EXPECT_TRUE(JsonChecker(json).ok());
+  for (const char* key :
+       {"\"semantic\":", "\"mapped\":", "\"enclosing\":", "\"freespace\":", "\"purges\":",
+        "\"collar\":", "\"kind\":\"boundary_root\"", "\"kind\":\"child\"", "\"model\":",
+        "\"disks\":", "\"grid\":", "\"paths\":", "\"status\":\"reached\"", "\"lid\":[["}) {
+    EXPECT_TRUE(contains(json, key)) << key;
+  }
+  EXPECT_FALSE(contains(json, "null,")) << "a non-finite number was written";
+  const bool plots = have_matplotlib();
+  for (const char* png : {"semantic.png", "mapped.png", "model.png", "path.png"}) {
+    EXPECT_EQ(std::filesystem::exists(dir + "/" + png), plots) << png;
+  }
+  if (!plots) {
+    EXPECT_TRUE(contains(r.out, "warning")) << r.out;
+  }
+
+  const std::string dir2 = temp_dir();
+  const Result h =
+      run("diffeo experiments/scenes/diffeo_simple.yaml --robot holonomic --no-plot "
+          "--out " +
+          dir2);
+  ASSERT_EQ(h.code, 0) << h.out;
+  EXPECT_TRUE(JsonChecker(slurp(dir2 + "/diffeo.json")).ok());
+  EXPECT_TRUE(contains(slurp(dir2 + "/diffeo.json"), "\"model\":\"holonomic\""));
+  EXPECT_FALSE(std::filesystem::exists(dir2 + "/model.png"));
+  std::filesystem::remove_all(dir);
+  std::filesystem::remove_all(dir2);
+}
+
+TEST(CliTest, DiffeoUsage) {
+  const Result help = run("diffeo --help");
+  EXPECT_EQ(help.code, 0);
+  EXPECT_TRUE(contains(help.out, "--robot")) << help.out;
+  EXPECT_TRUE(contains(run("--help").out, "diffeo"));
+  const std::string scene = " experiments/scenes/diffeo_simple.yaml";
+  const Result no_out = run("diffeo" + scene);
+  EXPECT_EQ(no_out.code, 2);
+  EXPECT_TRUE(contains(no_out.out, "missing --out")) << no_out.out;
+  const Result robot = run("diffeo" + scene + " --out /tmp/x --robot tank");
+  EXPECT_EQ(robot.code, 2);
+  EXPECT_TRUE(contains(robot.out, "--robot")) << robot.out;
+  EXPECT_EQ(run("diffeo" + scene + " --out /tmp/x --starts -3").code, 2);
+  const Result missing = run("diffeo no/such/scene.yaml --out /tmp/x");
+  EXPECT_EQ(missing.code, 2);
+  EXPECT_TRUE(contains(missing.out, "no/such/scene.yaml")) << missing.out;
+}
+
+TEST(CliTest, DiffeoRejectsBadScenesNamingTheProblem) {
+  const std::string dir = temp_dir();
+  const std::string ws = "workspace: [[0,0],[10,0],[10,10],[0,10]]\n";
+  const std::string robot = "robot: {radius: 0.2, start: [1,1], goal: [9,9]}\n";
+  struct Case {
+    std::string text;
+    std::string message;  // expected in the output, after "bad.yaml:"
+  };
+  const Case cases[] = {
+      {ws, "bad.yaml:1: missing the required key 'robot'"},
+      {ws + "robot: {radius: 0.2, start: [1,1]}\n", "bad.yaml:2: robot is missing the key 'goal'"},
+      {ws + "robot: {radius: 0.2, start: [nan,1], goal: [9,9]}\n",
+       "bad.yaml:2: non-finite number 'nan'"},
+      {ws + robot + "familiar:\n  - [[2,2],[3,3],[3,2],[2,3]]\n",
+       "bad.yaml:4: familiar obstacle 1: not simple"},
+      {ws + robot + "colour: 3\n", "bad.yaml:3: unknown key 'colour'"},
+      {ws + "robot: {radius: 0.2, start: [1,1], goal: [9,9], speed: 2}\n",
+       "bad.yaml:2: unknown key 'speed' in robot"},
+      {ws + "robot: {radius: 0.2, start: [4,4], goal: [9,9]}\nfamiliar:\n"
+            "  - [[3,3],[6,3],[6,4],[4,4.5],[4,6],[3,6]]\n",
+       "robot start (4, 4) is inside familiar obstacle 1 (line 4)"},
+      {ws + robot + "unknown:\n  - [[3,3],[6,3],[6,4],[4,4],[4,6],[3,6]]\n",
+       "bad.yaml:4: unknown obstacle 1 is not convex"},
+      {ws + robot + "params: {p: 3}\n", "bad.yaml:3: diffeomorphism parameter p"},
+      {ws + robot + "movable:\n  - {center: [5,5], radius: 1e999}\n",
+       "bad.yaml:4: non-finite number '1e999'"},
+      {ws + robot + "familiar: [[[2,2],[3,2],[3,3]]\n", "bad.yaml:3: unterminated list"},
+      {ws + ws + robot, "bad.yaml:2: duplicate key 'workspace'"},
+  };
+  for (const Case& c : cases) {
+    const std::string file = dir + "/bad.yaml";
+    std::ofstream(file) << c.text;
+    const Result r = run("diffeo " + file + " --no-plot --out " + dir + "/out");
+    EXPECT_EQ(r.code, 2) << c.text << r.out;
+    EXPECT_TRUE(contains(r.out, c.message)) << c.text << "\n--- got:\n" << r.out;
+  }
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

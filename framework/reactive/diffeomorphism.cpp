@@ -1,0 +1,640 @@
+// The purging diffeomorphism of docs/reactive.md §3 (Vasilopoulos & Koditschek, WAFR 2018;
+// the paper's reference [7]). Construction: convex decomposition, trees, centres, collars
+// (§3.1–3.4); evaluation: implicit functions (§3.5), switches (§3.6), deforming factors
+// (§3.7) and one purge (§3.8), composed with first and second derivatives.
+#include "reactive/diffeomorphism.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <deque>
+#include <limits>
+#include <string>
+
+#include "core/error.h"
+#include "geometry/dilation.h"
+#include "geometry/partition.h"
+
+namespace rearm::reactive {
+namespace {
+
+using Eigen::Matrix2d;
+using Eigen::Vector2d;
+using geometry::HalfPlane;
+
+// Shortest collar or piece edge kept as a half-plane of the implicit functions (m); shorter
+// edges are clipping debris whose normals are numerically meaningless.
+constexpr double kMinEdgeLength = 1e-10;
+// Two points of adjacent pieces are the same vertex only when bit-identical (the partition
+// copies input vertices), so no tolerance is needed for adjacency; this one (m) decides
+// whether a piece lies inside its collar after the cuts.
+constexpr double kCollarContainsTolerance = 1e-9;
+// Points within this distance (m) of a piece count as on its boundary (σ = 1). Without it,
+// the rounding of β on the boundary (~1e-15) meets a vanishing σ_γ near the corners of the
+// adjacency edge, where σ = σ_γσ_β / (σ_γσ_β + 1 − σ_β) is 0/0 in the limit.
+constexpr double kBoundarySnap = 1e-12;
+// Purge centres must lie at least this far (m) from the adjacency edge.
+constexpr double kMinCenterDepth = 1e-9;
+
+// A scalar function with gradient and Hessian at one point.
+struct Scalar2 {
+  double v = 0;
+  Vector2d g = Vector2d::Zero();
+  Matrix2d H = Matrix2d::Zero();
+};
+
+double ipow(double x, int k) {
+  double r = 1;
+  while (k > 0) {
+    if (k & 1) r *= x;
+    x *= x;
+    k >>= 1;
+  }
+  return r;
+}
+
+// R-conjunction (§3.5) a ∧ b = a + b − (a^p + b^p)^{1/p} of inside-positive linear functions
+// l_k(y) = offset_k − normal_k·y, folded left to right, with gradient and Hessian. Evaluated
+// scaled by m = max(|a|, |b|) so that no power under- or overflows.
+Scalar2 r_conjunction(const std::vector<HalfPlane>& planes, const Point& y, int p) {
+  Scalar2 acc;
+  acc.v = -planes.front().value(y);
+  acc.g = -planes.front().normal;
+  for (std::size_t k = 1; k < planes.size(); ++k) {
+    const double b = -planes[k].value(y);
+    const Vector2d bg = -planes[k].normal;
+    const double a = acc.v;
+    const double m = std::max(std::abs(a), std::abs(b));
+    if (m == 0) {  // a corner point exactly: value 0, gradient of the sum (not differentiable)
+      acc.g += bg;
+      continue;
+    }
+    const double as = a / m, bs = b / m;
+    const double ap2 = ipow(as, p - 2), bp2 = ipow(bs, p - 2);
+    const double ap1 = ap2 * as, bp1 = bp2 * bs;
+    const double s = ap1 * as + bp1 * bs;  // in [1, 2]
+    const double t = std::pow(s, 1.0 / p);
+    const double t1 = t / s;   // s^{1/p − 1}
+    const double t2 = t1 / s;  // s^{1/p − 2}
+    const double ra = 1 - ap1 * t1;
+    const double rb = 1 - bp1 * t1;
+    const double c = (p - 1) / m;
+    const double raa = c * (-ap2 * t1 + ap1 * ap1 * t2);
+    const double rbb = c * (-bp2 * t1 + bp1 * bp1 * t2);
+    const double rab = c * ap1 * bp1 * t2;
+    const Matrix2d H = raa * acc.g * acc.g.transpose() +
+                       rab * (acc.g * bg.transpose() + bg * acc.g.transpose()) +
+                       rbb * bg * bg.transpose() + ra * acc.H;
+    acc.g = ra * acc.g + rb * bg;
+    acc.H = H;
+    acc.v = a + b - m * t;
+  }
+  return acc;
+}
+
+// Half-planes (unit normals) of a convex counter-clockwise polygon's edges.
+std::vector<HalfPlane> edge_planes(const Polygon& poly) {
+  std::vector<HalfPlane> out;
+  for (std::size_t i = 0, n = poly.size(); i < n; ++i) {
+    const Point& a = poly.vertices[i];
+    const Point& b = poly.vertices[(i + 1) % n];
+    const double len = (b - a).norm();
+    if (len < kMinEdgeLength) continue;
+    HalfPlane h = geometry::left_of(a, b);
+    h.normal /= len;
+    h.offset /= len;
+    if (!out.empty() && (out.back().normal - h.normal).norm() < 1e-12 &&
+        std::abs(out.back().offset - h.offset) < 1e-12) {
+      continue;  // collinear continuation: the same half-plane
+    }
+    out.push_back(h);
+  }
+  return out;
+}
+
+bool same_edge(const Point& a, const Point& b, const Point& p, const Point& q) {
+  return (a == p && b == q) || (a == q && b == p);
+}
+
+// Index of the edge (i, i+1) of poly equal to {a, b}, or -1.
+int find_edge(const Polygon& poly, const Point& a, const Point& b) {
+  for (std::size_t i = 0, n = poly.size(); i < n; ++i) {
+    if (same_edge(poly.vertices[i], poly.vertices[(i + 1) % n], a, b)) return static_cast<int>(i);
+  }
+  return -1;
+}
+
+// The piece's vertices with c inserted after edge e's start: [.., v0, c, v1, ..].
+Polygon augmented(const Polygon& piece, int e, const Point& c) {
+  Polygon a;
+  const std::size_t n = piece.size();
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::size_t i = (static_cast<std::size_t>(e) + 1 + k) % n;  // start at v1
+    a.vertices.push_back(piece.vertices[i]);
+  }
+  a.vertices.push_back(c);  // after v0 (the last one pushed), before v1 (the first)
+  return a;
+}
+
+struct Node {
+  int piece = -1;
+  int parent = -1;
+  int depth = 0;
+  int edge = -1;  // index of the adjacency (or lid) edge v0→v1 in the piece's own order
+};
+
+// A piece's corners at the ends of its edge e are strictly convex (sine of the turn above
+// this), so a centre beyond the edge keeps the augmented polygon convex (§3.3).
+constexpr double kMinCornerSine = 1e-9;
+
+double turn_sine(const Point& a, const Point& b, const Point& c);
+
+bool corners_convex(const Polygon& piece, int e) {
+  const std::size_t s = piece.size();
+  const Point& vp = piece.vertices[(e + s - 1) % s];
+  const Point& v0 = piece.vertices[e];
+  const Point& v1 = piece.vertices[(e + 1) % s];
+  const Point& vn = piece.vertices[(e + 2) % s];
+  return turn_sine(vp, v0, v1) > kMinCornerSine && turn_sine(v0, v1, vn) > kMinCornerSine;
+}
+
+// A vertex of the component lying on a piece's edge (a T-junction left by a partition that
+// dropped a 180° vertex) is inserted into that edge, so that adjacent pieces share whole,
+// bit-identical edges. Relative collinearity tolerance:
+constexpr double kJunctionTolerance = 1e-9;
+
+void insert_junctions(std::vector<Polygon>& pieces, const std::vector<Point>& points) {
+  for (Polygon& piece : pieces) {
+    std::vector<Point> out;
+    const std::size_t n = piece.size();
+    for (std::size_t i = 0; i < n; ++i) {
+      const Point& a = piece.vertices[i];
+      const Point& b = piece.vertices[(i + 1) % n];
+      out.push_back(a);
+      const Vector2d d = b - a;
+      const double len2 = d.squaredNorm();
+      std::vector<std::pair<double, Point>> on_edge;
+      for (const Point& v : points) {
+        if (v == a || v == b) continue;
+        const Vector2d w = v - a;
+        const double t = w.dot(d) / len2;
+        if (t <= 0 || t >= 1) continue;
+        if (std::abs(d.x() * w.y() - d.y() * w.x()) <= kJunctionTolerance * len2) {
+          on_edge.emplace_back(t, v);
+        }
+      }
+      std::sort(on_edge.begin(), on_edge.end(),
+                [](const auto& l, const auto& r) { return l.first < r.first; });
+      for (const auto& [t, v] : on_edge) out.push_back(v);
+    }
+    piece.vertices = std::move(out);
+  }
+}
+
+std::vector<Point> all_vertices(const std::vector<Polygon>& pieces) {
+  std::vector<Point> out;
+  for (const Polygon& p : pieces) out.insert(out.end(), p.vertices.begin(), p.vertices.end());
+  std::sort(out.begin(), out.end(), [](const Point& a, const Point& b) {
+    return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
+  });
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+double turn_sine(const Point& a, const Point& b, const Point& c) {
+  const Vector2d u = b - a, w = c - b;
+  return (u.x() * w.y() - u.y() * w.x()) / (u.norm() * w.norm());
+}
+
+// A piece whose side runs straight on past the end v of an edge it shares with a neighbour
+// (a flat corner, as a T's bar under its stem) cannot be that neighbour's child. Such a piece
+// is cut by the line through v that continues the neighbour's other edge at v (the stem's
+// side), which leaves convex pieces sharing whole edges and corners that are not flat. Rounds
+// of cuts repeat until no flat corner is left at a shared edge (bounded); Steiner points of the
+// cuts are inserted into the edges they split.
+constexpr int kMaxSplitRounds = 16;
+
+std::vector<Polygon> split_flat_corners(std::vector<Polygon> P, double sliver_area) {
+  for (int round = 0; round < kMaxSplitRounds; ++round) {
+    bool cut = false;
+    for (std::size_t x = 0; x < P.size() && !cut; ++x) {
+      const std::size_t n = P[x].size();
+      for (std::size_t i = 0; i < n && !cut; ++i) {
+        const Point& prev = P[x].vertices[(i + n - 1) % n];
+        const Point& v = P[x].vertices[i];
+        const Point& next = P[x].vertices[(i + 1) % n];
+        if (std::abs(turn_sine(prev, v, next)) > kMinCornerSine) continue;
+        // A neighbour y sharing the edge (v, prev) or (v, next) with x.
+        for (std::size_t y = 0; y < P.size() && !cut; ++y) {
+          if (y == x) continue;
+          const int e1 = find_edge(P[y], v, prev);
+          const int e2 = find_edge(P[y], v, next);
+          if (e1 < 0 && e2 < 0) continue;
+          const Point& w = e1 >= 0 ? prev : next;  // the shared edge is (v, w)
+          const std::size_t m = P[y].size();
+          std::size_t j = 0;
+          while (P[y].vertices[j] != v) ++j;
+          const Point& a = P[y].vertices[(j + m - 1) % m];
+          const Point& b = P[y].vertices[(j + 1) % m];
+          const Point u = (a == w) ? b : a;  // y's other neighbour of v
+          const Vector2d d = v - u;
+          if (d.norm() <= 0) continue;
+          const geometry::HalfPlane h{Vector2d(-d.y(), d.x()), Vector2d(-d.y(), d.x()).dot(v)};
+          Polygon left = geometry::clip(P[x], h);
+          Polygon right = geometry::clip(P[x], geometry::HalfPlane{-h.normal, -h.offset});
+          if (left.area() <= sliver_area || right.area() <= sliver_area) continue;
+          P[x] = std::move(left);
+          P.push_back(std::move(right));
+          cut = true;
+        }
+      }
+    }
+    if (!cut) break;
+    insert_junctions(P, all_vertices(P));
+  }
+  return P;
+}
+
+// One component's tree (§3.2): pieces, nodes, and the purge order (deepest first, root last).
+struct Tree {
+  std::vector<Polygon> pieces;
+  std::vector<Node> nodes;
+  std::vector<int> order;
+};
+
+// Breadth-first tree of the pieces from `root` (root_edge: its lid, or -1). Fails (nullopt)
+// when the pieces are not edge-connected, or some child (or the boundary root) has a flat
+// corner at its adjacency edge: a convex partition may leave a piece whose side runs on past
+// the edge it shares (a T-junction); that piece must be the parent of that adjacency.
+std::optional<Tree> plan_tree(const std::vector<Polygon>& P, int root, int root_edge) {
+  const int n = static_cast<int>(P.size());
+  Tree t;
+  t.nodes.assign(n, Node{});
+  std::vector<bool> seen(n, false);
+  std::deque<int> queue{root};
+  seen[root] = true;
+  t.nodes[root] = Node{root, -1, 0, root_edge};
+  if (root_edge >= 0 && !corners_convex(P[root], root_edge)) return std::nullopt;
+  while (!queue.empty()) {
+    const int u = queue.front();
+    queue.pop_front();
+    t.order.push_back(u);
+    for (int v = 0; v < n; ++v) {
+      if (seen[v]) continue;
+      for (std::size_t i = 0, s = P[v].size(); i < s; ++i) {
+        const Point& a = P[v].vertices[i];
+        const Point& b = P[v].vertices[(i + 1) % s];
+        if (find_edge(P[u], a, b) >= 0) {
+          if (!corners_convex(P[v], static_cast<int>(i))) return std::nullopt;
+          seen[v] = true;
+          t.nodes[v] = Node{v, u, t.nodes[u].depth + 1, static_cast<int>(i)};
+          queue.push_back(v);
+          break;
+        }
+      }
+    }
+  }
+  if (static_cast<int>(t.order.size()) != n) return std::nullopt;
+  std::reverse(t.order.begin(), t.order.end());
+  t.pieces = P;
+  return t;
+}
+
+// A tree over pieces P: rooted at the lid's piece (pocket) or at the largest piece that
+// admits one (free component).
+std::optional<Tree> choose_tree(const std::vector<Polygon>& P,
+                                const std::optional<std::pair<Point, Point>>& lid) {
+  if (P.empty()) return std::nullopt;
+  if (lid) {
+    for (int k = 0; k < static_cast<int>(P.size()); ++k) {
+      const int e = find_edge(P[k], lid->first, lid->second);
+      if (e >= 0) return plan_tree(P, k, e);
+    }
+    return std::nullopt;
+  }
+  std::vector<int> by_area(P.size());
+  for (std::size_t k = 0; k < P.size(); ++k) by_area[k] = static_cast<int>(k);
+  std::stable_sort(by_area.begin(), by_area.end(),
+                   [&](int a, int b) { return P[a].area() > P[b].area(); });
+  for (int root : by_area) {
+    if (auto t = plan_tree(P, root, -1)) return t;
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+Diffeomorphism Diffeomorphism::build(const MappedSpace& m, const DiffeoParams& params) {
+  validate(params);
+  if (m.enclosing.size() < 3 || !m.enclosing.is_convex()) {
+    throw Error(
+        "diffeomorphism: the enclosing freespace must be a convex counter-clockwise polygon");
+  }
+  Diffeomorphism d;
+  d.params_ = params;
+  d.model_.boundary = m.enclosing;
+  d.model_.convex = m.unknown;
+  const Polygon& enclosing = m.enclosing;
+
+  // §3.1–3.2: convex decomposition of every component (slivers dropped) and its tree; when
+  // no root admits a tree (flat corners at shared edges), the component is triangulated
+  // instead, whose pieces have no flat corner.
+  std::vector<Tree> trees(m.familiar.size());
+  std::vector<std::vector<Polygon>> pieces(m.familiar.size());
+  for (std::size_t ci = 0; ci < m.familiar.size(); ++ci) {
+    const FamiliarComponent& comp = m.familiar[ci];
+    std::vector<Polygon> P;
+    for (Polygon& p : geometry::convex_partition(comp.polygon)) {
+      if (p.area() > params.sliver_area) P.push_back(std::move(p));
+    }
+    if (P.empty()) continue;  // a sliver component: nothing to purge
+    insert_junctions(P, comp.polygon.vertices);
+    auto tree = choose_tree(P, comp.lid);
+    if (!tree) tree = choose_tree(split_flat_corners(P, params.sliver_area), comp.lid);
+    if (!tree) tree = choose_tree(geometry::triangulate(comp.polygon), comp.lid);
+    if (!tree) {
+      throw Error("diffeomorphism: familiar component " + std::to_string(ci) +
+                  " admits no purging tree (its convex pieces are not edge-connected)");
+    }
+    trees[ci] = std::move(*tree);
+    pieces[ci] = trees[ci].pieces;
+  }
+
+  // Convex obstacles a collar must avoid: pieces (tagged by component and piece), unknown
+  // fragments and movable objects (circumscribed polygons, supersets of the disks).
+  struct Blocker {
+    int component;  // -1: not familiar
+    int piece;
+    const Polygon* poly;
+  };
+  std::vector<Polygon> extra;
+  for (const Disk& disk : m.movable) {
+    extra.push_back(geometry::regular_polygon(disk, kDiskPolygonSides, true));
+  }
+  std::vector<Blocker> blockers;
+  for (std::size_t ci = 0; ci < pieces.size(); ++ci) {
+    for (std::size_t k = 0; k < pieces[ci].size(); ++k) {
+      blockers.push_back({static_cast<int>(ci), static_cast<int>(k), &pieces[ci][k]});
+    }
+  }
+  for (const Polygon& u : m.unknown) blockers.push_back({-1, -1, &u});
+  for (const Polygon& e : extra) blockers.push_back({-1, -1, &e});
+
+  std::vector<Disk> root_disks;
+  for (std::size_t ci = 0; ci < pieces.size(); ++ci) {
+    const std::vector<Polygon>& P = pieces[ci];
+    if (P.empty()) continue;
+    const FamiliarComponent& comp = m.familiar[ci];
+    const int n = static_cast<int>(P.size());
+
+    const std::vector<Node>& nodes = trees[ci].nodes;
+    const std::vector<int>& order = trees[ci].order;
+    std::vector<int> rank(n);
+    for (int i = 0; i < n; ++i) rank[order[i]] = i;
+
+    const int first_purge = static_cast<int>(d.purges_.size());
+    for (int i = 0; i < n; ++i) {
+      const int k = order[i];
+      const Node& node = nodes[k];
+      const Polygon& piece = P[k];
+      Purge pu;
+      pu.component = static_cast<int>(ci);
+      pu.depth = node.depth;
+      pu.piece = piece;
+      pu.epsilon = params.epsilon;
+      Polygon shape = piece;  // the augmented polygon A (§3.4)
+      Polygon collar;
+      const std::size_t s = piece.size();
+      if (node.parent >= 0 || comp.lid) {
+        const Point v0 = piece.vertices[node.edge];
+        const Point v1 = piece.vertices[(node.edge + 1) % s];
+        const Point vp = piece.vertices[(node.edge + s - 1) % s];
+        const Point vn = piece.vertices[(node.edge + 2) % s];
+        const Point mid = (v0 + v1) / 2;
+        // The centre keeps A convex: inside the half-planes of the piece's edges next to the
+        // adjacency edge (extended beyond it).
+        const HalfPlane h_prev = geometry::left_of(vp, v0);
+        const HalfPlane h_next = geometry::left_of(v1, vn);
+        Point c;
+        if (node.parent >= 0) {
+          // §3.3: ray from the piece vertex farthest from the adjacency edge through its
+          // midpoint into the (admissible part of the) parent; c halfway to the exit.
+          const Vector2d t = (v1 - v0).normalized();
+          const Vector2d inward(-t.y(), t.x());  // into the piece (left of v0→v1)
+          Point far = piece.vertices.front();
+          for (const Point& v : piece.vertices) {
+            if ((v - v0).dot(inward) > (far - v0).dot(inward)) far = v;
+          }
+          const Vector2d dir = (mid - far).normalized();
+          const Polygon admissible = geometry::clip(geometry::clip(P[node.parent], h_prev), h_next);
+          const auto iv = geometry::line_interval(admissible, mid, dir);
+          if (!iv || iv->hi <= kMinCenterDepth) {
+            throw Error(
+                "diffeomorphism: no admissible purge centre for a convex piece of "
+                "familiar component " +
+                std::to_string(ci));
+          }
+          c = mid + (iv->hi / 2) * dir;
+          pu.kind = Purge::Kind::kChild;
+          pu.parent = first_purge + rank[node.parent];
+        } else {
+          // §3.3: boundary-touching root; c just outside ∂F_e beyond the lid, close enough
+          // that it stays inside every other edge of F_e and keeps A convex.
+          const Vector2d t = (v1 - v0).normalized();
+          const Vector2d out(t.y(), -t.x());
+          double delta = params.boundary_center_offset;
+          auto limit = [&](const HalfPlane& h) {
+            const double along = h.normal.dot(out);
+            const double room = -h.value(mid);
+            if (along > 0 && room > kMinCenterDepth * h.normal.norm()) {
+              delta = std::min(delta, 0.5 * room / along);
+            }
+          };
+          limit(h_prev);
+          limit(h_next);
+          for (std::size_t e = 0, ne = enclosing.size(); e < ne; ++e) {
+            const HalfPlane h =
+                geometry::left_of(enclosing.vertices[e], enclosing.vertices[(e + 1) % ne]);
+            if (std::abs(h.value(mid)) <= 1e-9 * h.normal.norm()) continue;  // the lid's edge
+            limit(h);
+          }
+          c = mid + delta * out;
+          pu.kind = Purge::Kind::kBoundaryRoot;
+        }
+        pu.center = c;
+        pu.v0 = v0;
+        pu.v1 = v1;
+        shape = augmented(piece, node.edge, c);
+        collar = geometry::offset_convex(shape, params.epsilon, geometry::kMiterLimit);
+        collar = geometry::clip(collar, geometry::left_of(v0, c));
+        collar = geometry::clip(collar, geometry::left_of(c, v1));
+        for (std::size_t e = 0, ne = enclosing.size(); e < ne; ++e) {
+          const HalfPlane h =
+              geometry::left_of(enclosing.vertices[e], enclosing.vertices[(e + 1) % ne]);
+          if (pu.kind == Purge::Kind::kBoundaryRoot &&
+              std::abs(h.value(mid)) <= 1e-9 * h.normal.norm()) {
+            continue;  // a boundary root's collar crosses its lid to reach c (γ(c) = 0)
+          }
+          collar = geometry::clip(collar, h);
+        }
+      } else {
+        // §3.3: free root: c = vertex mean, model disk of radius 0.8·dist(c, ∂root).
+        Point c = Point::Zero();
+        for (const Point& v : piece.vertices) c += v;
+        c /= static_cast<double>(s);
+        double dist = std::numeric_limits<double>::infinity();
+        for (const HalfPlane& h : edge_planes(piece)) dist = std::min(dist, -h.value(c));
+        pu.kind = Purge::Kind::kDiskRoot;
+        pu.center = c;
+        pu.radius = params.root_radius_fraction * dist;
+        collar = geometry::intersect_convex(
+            geometry::offset_convex(piece, params.epsilon, geometry::kMiterLimit), enclosing);
+        root_disks.push_back(Disk{c, pu.radius});
+      }
+      // §3.4: the collar avoids every obstacle still present when this piece is purged
+      // (later pieces of its component except its parent, every other component, unknown and
+      // movable obstacles): each overlapping one is cut off by a line separating it from A.
+      const int parent_piece = node.parent;
+      for (const Blocker& b : blockers) {
+        if (b.component == static_cast<int>(ci)) {
+          if (b.piece == k || b.piece == parent_piece || rank[b.piece] < i) continue;
+        }
+        if (!geometry::convex_overlap(collar, *b.poly)) continue;
+        const auto cut = geometry::separating_half_plane(shape, *b.poly, 1e-9);
+        if (!cut) {
+          throw Error("diffeomorphism: a convex piece of familiar component " + std::to_string(ci) +
+                      " overlaps another obstacle; obstacles must be consolidated first");
+        }
+        collar = geometry::clip(collar, *cut);
+      }
+      for (const Point& v : piece.vertices) {
+        if (!geometry::convex_contains(collar, v, kCollarContainsTolerance)) {
+          throw Error("diffeomorphism: the collar of a convex piece of familiar component " +
+                      std::to_string(ci) + " cannot contain the piece (touching obstacles?)");
+        }
+      }
+      pu.collar = collar;
+      pu.beta_planes = edge_planes(piece);
+      pu.gamma_planes = edge_planes(collar);
+      pu.collar_box = Eigen::AlignedBox2d();
+      for (const Point& v : collar.vertices) pu.collar_box.extend(v);
+      d.purges_.push_back(std::move(pu));
+    }
+  }
+  d.model_.disks = root_disks;
+  d.model_.disks.insert(d.model_.disks.end(), m.movable.begin(), m.movable.end());
+  return d;
+}
+
+DiffeoEval Diffeomorphism::evaluate(const Point& x, std::size_t count) const {
+  DiffeoEval out;
+  out.h = x;
+  const int p = params_.p;
+  const double eps = params_.epsilon;
+  const double mu1 = params_.mu1;
+  const double mu2 = params_.mu2;
+  count = std::min(count, purges_.size());
+  for (std::size_t index = 0; index < count; ++index) {
+    const Purge& pu = purges_[index];
+    const Point& y = out.h;
+    if (!pu.collar_box.contains(y)) continue;  // identity outside the collar (σ = 0)
+    // §3.5–3.6: β (negative inside the piece) and its switch.
+    Scalar2 beta = r_conjunction(pu.beta_planes, y, p);
+    beta.v = -beta.v;
+    beta.g = -beta.g;
+    beta.H = -beta.H;
+    if (beta.v >= eps) continue;
+    double sigma;
+    Vector2d dsigma;
+    Matrix2d ddsigma;
+    if (beta.v <= kBoundarySnap) {
+      // On or inside the piece: fully purged (the obstacle's interior is not freespace).
+      sigma = 1;
+      dsigma.setZero();
+      ddsigma.setZero();
+    } else {
+      const Scalar2 gamma = r_conjunction(pu.gamma_planes, y, p);
+      if (gamma.v <= 0) continue;
+      // σ_β = exp(−μ1/(ε−β)) / exp(−μ1/ε); 1 − σ_β by expm1 to keep it accurate near β = 0.
+      const double q = eps - beta.v;
+      const double expo = -mu1 * beta.v / (eps * q);  // −μ1/(ε−β) + μ1/ε
+      const double sb = std::exp(expo);
+      const double one_minus_sb = -std::expm1(expo);
+      const double sb1 = -mu1 * sb / (q * q);
+      const double sb2 = sb * (mu1 * mu1 / (q * q * q * q) - 2 * mu1 / (q * q * q));
+      const Vector2d gb = sb1 * beta.g;
+      const Matrix2d Hb = sb2 * beta.g * beta.g.transpose() + sb1 * beta.H;
+      // σ_γ = exp(−μ2/α), α = γ/‖y − c‖.
+      const Vector2d w = y - pu.center;
+      const double r = w.norm();
+      const Vector2d dr = w / r;
+      const Matrix2d ddr = (Matrix2d::Identity() - dr * dr.transpose()) / r;
+      const double alpha = gamma.v / r;
+      const Vector2d dalpha = gamma.g / r - gamma.v * dr / (r * r);
+      const Matrix2d ddalpha =
+          gamma.H / r - (gamma.g * dr.transpose() + dr * gamma.g.transpose()) / (r * r) +
+          2 * gamma.v * dr * dr.transpose() / (r * r * r) - gamma.v * ddr / (r * r);
+      const double sg = std::exp(-mu2 / alpha);
+      const double sg1 = mu2 * sg / (alpha * alpha);
+      const double sg2 = sg * (mu2 * mu2 / std::pow(alpha, 4) - 2 * mu2 / std::pow(alpha, 3));
+      const Vector2d gg = sg1 * dalpha;
+      const Matrix2d Hg = sg2 * dalpha * dalpha.transpose() + sg1 * ddalpha;
+      // σ = σ_γσ_β / (σ_γσ_β + 1 − σ_β), with u = σ_γ, b = σ_β.
+      const double u = sg, b = sb;
+      const double den = u * b + one_minus_sb;
+      sigma = u * b / den;
+      const double su = b * one_minus_sb / (den * den);
+      const double sbb_ = u / (den * den);
+      const double suu = -2 * b * b * one_minus_sb / (den * den * den);
+      const double sbb2 = -2 * u * (u - 1) / (den * den * den);
+      const double sub =
+          (1 - 2 * b) / (den * den) - 2 * b * one_minus_sb * (u - 1) / (den * den * den);
+      dsigma = su * gg + sbb_ * gb;
+      ddsigma = suu * gg * gg.transpose() + sub * (gg * gb.transpose() + gb * gg.transpose()) +
+                sbb2 * gb * gb.transpose() + su * Hg + sbb_ * Hb;
+    }
+    // §3.7: deforming factor ν (homogeneous of degree −1 in y − c).
+    const Vector2d w = y - pu.center;
+    double nu;
+    Vector2d dnu;
+    Matrix2d ddnu;
+    if (pu.kind == Purge::Kind::kDiskRoot) {
+      const double r = w.norm();
+      nu = pu.radius / r;
+      dnu = -pu.radius * w / (r * r * r);
+      ddnu = 3 * pu.radius * w * w.transpose() / std::pow(r, 5) -
+             pu.radius / (r * r * r) * Matrix2d::Identity();
+    } else {
+      const Vector2d t = (pu.v1 - pu.v0).normalized();
+      const Vector2d n(-t.y(), t.x());
+      const double num = (pu.v0 - pu.center).dot(n);
+      const double den = w.dot(n);
+      nu = num / den;
+      dnu = -num / (den * den) * n;
+      ddnu = 2 * num / (den * den * den) * n * n.transpose();
+    }
+    // §3.8: h_i(y) = y + f(y)(y − c), f = σ(ν − 1).
+    const double f = sigma * (nu - 1);
+    const Vector2d df = (nu - 1) * dsigma + sigma * dnu;
+    const Matrix2d ddf =
+        (nu - 1) * ddsigma + dsigma * dnu.transpose() + dnu * dsigma.transpose() + sigma * ddnu;
+    const Matrix2d Ji = (1 + f) * Matrix2d::Identity() + w * df.transpose();
+    std::array<Matrix2d, 2> Hi;
+    for (int k = 0; k < 2; ++k) {
+      Hi[k] = w[k] * ddf;
+      Hi[k].row(k) += df.transpose();
+      Hi[k].col(k) += df;
+    }
+    // Chain rule: D²(h_i ∘ g)[k] = Jgᵀ Hi[k] Jg + Σ_a Ji(k, a) Hg[a].
+    std::array<Matrix2d, 2> H;
+    for (int k = 0; k < 2; ++k) {
+      H[k] = out.J.transpose() * Hi[k] * out.J + Ji(k, 0) * out.H[0] + Ji(k, 1) * out.H[1];
+    }
+    out.H = H;
+    out.J = Ji * out.J;
+    out.h = y + f * w;
+  }
+  return out;
+}
+
+}  // namespace rearm::reactive

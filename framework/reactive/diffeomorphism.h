@@ -1,0 +1,74 @@
+// The change of coordinates h from the mapped space to the model space (docs/reactive.md §3;
+// Vasilopoulos & Koditschek, WAFR 2018; paper Appendix II): every familiar component is
+// decomposed into convex pieces arranged in a tree; each piece is purged into its parent by
+//   h_i(x) = σ_i(x)(c_i + ν_i(x)(x − c_i)) + (1 − σ_i(x)) x                       (§3.8)
+// and the root is deformed into a disk (free component) or merged into ∂F_e (pocket). h is
+// the composition of all purges, deepest first; evaluate() returns h, Dh and D²h by the chain
+// rule. h is the identity outside the collars, and a C∞ diffeomorphism of the freespace away
+// from sharp corners.
+#pragma once
+
+#include <Eigen/Geometry>
+#include <array>
+#include <vector>
+
+#include "geometry/convex.h"
+#include "reactive/mapped_space.h"
+#include "reactive/model_space.h"
+#include "reactive/params.h"
+
+namespace rearm::reactive {
+
+// h(x), its Jacobian J = Dh(x) and second derivatives H[k](i, j) = ∂²h_k / ∂x_i ∂x_j.
+struct DiffeoEval {
+  Point h = Point::Zero();
+  Eigen::Matrix2d J = Eigen::Matrix2d::Identity();
+  std::array<Eigen::Matrix2d, 2> H{Eigen::Matrix2d::Zero(), Eigen::Matrix2d::Zero()};
+};
+
+// One purging transformation (one convex piece), in the coordinates of the space it acts on
+// (all earlier purges applied).
+struct Purge {
+  enum class Kind { kChild, kDiskRoot, kBoundaryRoot };
+  Kind kind = Kind::kChild;
+  int component = 0;             // index into MappedSpace::familiar
+  int parent = -1;               // index into purges(), -1 for a root
+  int depth = 0;                 // 0 for a root
+  Polygon piece;                 // the convex piece (counter-clockwise)
+  Polygon collar;                // convex switch domain (σ > 0 only inside)
+  Point center = Point::Zero();  // c_i
+  Point v0 = Point::Zero();      // adjacency (or lid) edge; unused for a disk root
+  Point v1 = Point::Zero();
+  double radius = 0;   // disk root: model disk radius ρ
+  double epsilon = 0;  // the collar width used for this piece
+  // Flat evaluation data: unit normals pointing into the piece / collar.
+  std::vector<geometry::HalfPlane> beta_planes;
+  std::vector<geometry::HalfPlane> gamma_planes;
+  Eigen::AlignedBox2d collar_box;
+};
+
+class Diffeomorphism {
+ public:
+  // Builds the trees of every familiar component of m (docs/reactive.md §3.1–3.7). Throws
+  // rearm::Error on invalid parameters or geometry that admits no construction (a collar
+  // that cannot avoid another obstacle).
+  static Diffeomorphism build(const MappedSpace& m, const DiffeoParams& params = {});
+
+  // h, Dh, D²h at x. x must be a finite point of the freespace (not checked on this path;
+  // inside an obstacle the value is defined but meaningless). No allocation.
+  DiffeoEval evaluate(const Point& x) const { return evaluate(x, purges_.size()); }
+  // The composition of the first `count` purges only (the intermediate spaces of §3.8).
+  DiffeoEval evaluate(const Point& x, std::size_t count) const;
+  Point map(const Point& x) const { return evaluate(x).h; }
+
+  const ModelSpace& model() const { return model_; }
+  const std::vector<Purge>& purges() const { return purges_; }
+  const DiffeoParams& params() const { return params_; }
+
+ private:
+  DiffeoParams params_;
+  ModelSpace model_;
+  std::vector<Purge> purges_;  // in composition order
+};
+
+}  // namespace rearm::reactive

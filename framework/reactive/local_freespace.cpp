@@ -1,0 +1,115 @@
+// Local freespace of the model-space navigation law (see local_freespace.h).
+#include "reactive/local_freespace.h"
+
+#include <cmath>
+#include <numbers>
+#include <string>
+#include <utility>
+
+#include "core/error.h"
+#include "geometry/distance.h"
+
+namespace rearm::reactive {
+namespace {
+
+using geometry::HalfPlane;
+using geometry::Point;
+using geometry::Polygon;
+
+// Sutherland–Hodgman clip of a convex polygon by h into `out` (reusing its capacity); the
+// same construction as geometry::clip without the fresh allocation.
+void clip_into(const Polygon& in, const HalfPlane& h, Polygon& out) {
+  out.vertices.clear();
+  const std::size_t n = in.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Point& p = in.vertices[i];
+    const Point& q = in.vertices[(i + 1) % n];
+    const double fp = h.value(p);
+    const double fq = h.value(q);
+    if (fp <= 0) out.vertices.push_back(p);
+    if ((fp < 0 && fq > 0) || (fp > 0 && fq < 0)) {
+      out.vertices.push_back(p + (fp / (fp - fq)) * (q - p));
+    }
+  }
+}
+
+// The bisector half-plane { q : (q − y)·u ≤ d/2 } of y and the obstacle point p at distance
+// d = ‖p − y‖ > 0 in direction u = (p − y)/d.
+HalfPlane bisector(const Point& y, const Point& p, double d) {
+  const Point u = (p - y) / d;
+  return HalfPlane{u, u.dot(y) + 0.5 * d};
+}
+
+[[noreturn]] void not_free(const std::string& what) {
+  throw Error("local_freespace: the point y is not in the model freespace (" + what + ")");
+}
+
+}  // namespace
+
+void local_freespace(const ModelSpace& m, const Point& y, double sensing_range, Polygon& out,
+                     Polygon& scratch, int sides) {
+  if (!y.allFinite()) throw Error("local_freespace: point y is not finite");
+  if (!std::isfinite(sensing_range) || !(sensing_range > 0)) {
+    throw Error("local_freespace: sensing range must be finite and positive");
+  }
+  if (sides < 3) throw Error("local_freespace: the sensing polygon needs at least 3 sides");
+  if (m.boundary.size() < 3) throw Error("local_freespace: model boundary has < 3 vertices");
+
+  // Start from the inscribed sensing polygon, written straight into `out`.
+  out.vertices.clear();
+  const double half_range = 0.5 * sensing_range;
+  for (int i = 0; i < sides; ++i) {
+    const double a = 2 * std::numbers::pi * i / sides;
+    out.vertices.emplace_back(y + half_range * Point(std::cos(a), std::sin(a)));
+  }
+  const auto apply = [&](const HalfPlane& h) {
+    clip_into(out, h, scratch);
+    std::swap(out.vertices, scratch.vertices);
+  };
+
+  // Enclosing boundary: y strictly inside; its complement's nearest point gives a bisector,
+  // and every edge of F_e clips LF.
+  if (!geometry::convex_contains(m.boundary, y)) not_free("outside the model boundary");
+  const geometry::Nearest wall = geometry::nearest_on_boundary(m.boundary, y);
+  if (!(wall.distance > 0)) not_free("on the model boundary");
+  if (wall.distance < sensing_range) apply(bisector(y, wall.point, wall.distance));
+  for (std::size_t i = 0, n = m.boundary.size(); i < n; ++i) {
+    apply(geometry::left_of(m.boundary.vertices[i], m.boundary.vertices[(i + 1) % n]));
+  }
+
+  for (std::size_t i = 0; i < m.disks.size(); ++i) {
+    const geometry::Disk& disk = m.disks[i];
+    const Point to_center = disk.center - y;
+    const double dc = to_center.norm();
+    const double d = dc - disk.radius;
+    if (!(d > 0)) not_free("inside or on model disk " + std::to_string(i));
+    if (d >= sensing_range) continue;
+    // Nearest point of the disk: c + ρ·unit(y − c); the bisector depends only on u and d.
+    apply(bisector(y, y + (d / dc) * to_center, d));
+  }
+
+  for (std::size_t i = 0; i < m.convex.size(); ++i) {
+    const Polygon& obstacle = m.convex[i];
+    if (obstacle.size() == 0) continue;
+    if (obstacle.size() >= 3 && geometry::convex_contains(obstacle, y)) {
+      not_free("inside convex obstacle " + std::to_string(i));
+    }
+    const geometry::Nearest near = geometry::nearest_on_boundary(obstacle, y);
+    if (!(near.distance > 0)) not_free("on convex obstacle " + std::to_string(i));
+    if (near.distance >= sensing_range) continue;
+    apply(bisector(y, near.point, near.distance));
+  }
+}
+
+Polygon local_freespace(const ModelSpace& m, const Point& y, double sensing_range, int sides) {
+  Polygon out;
+  Polygon scratch;
+  if (sides >= 3) {
+    out.vertices.reserve(static_cast<std::size_t>(sides) + 8);
+    scratch.vertices.reserve(static_cast<std::size_t>(sides) + 8);
+  }
+  local_freespace(m, y, sensing_range, out, scratch, sides);
+  return out;
+}
+
+}  // namespace rearm::reactive

@@ -1,0 +1,247 @@
+// Semantic → mapped space (docs/reactive.md §2, paper Appendix III's freespace components).
+#include "reactive/mapped_space.h"
+
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "core/error.h"
+#include "geometry/boolean.h"
+#include "geometry/dilation.h"
+#include "geometry/distance.h"
+
+namespace rearm::reactive {
+namespace {
+
+using geometry::Region;
+using geometry::RegionSet;
+
+// Points closer than this (relative to the workspace size) to ∂F_e count as on it when the
+// lid of a pocket is identified; pocket vertices on the lid are copies of F_k's vertices, so
+// only rounding of the hull's own arithmetic is absorbed here.
+constexpr double kLidTolerance = 1e-9;
+// Pockets (and clusters) of smaller area than this, relative to the workspace area, are
+// rounding slivers of the exact Booleans, not obstacles.
+constexpr double kRelativeSliverArea = 1e-12;
+
+// Obstacles are dilated by r + kContactSlack (m): dilations that touch in exact arithmetic
+// can be 1e-15 m apart after rounding, which would leave a zero-width corridor of freespace
+// between them; the slack consolidates them (and keeps the robot 1e-9 m further away).
+constexpr double kContactSlack = 1e-9;
+// Vertices closer than this (m) to the segment joining their neighbours are dropped from the
+// purged components: such nearly flat corners (and the sliver pieces they make) admit no purge
+// centre. The obstacle moves by at most this distance.
+constexpr double kFlatVertexDistance = 1e-6;
+
+// Drops nearly flat vertices (kFlatVertexDistance), repeatedly, keeping at least 3.
+Polygon drop_flat_vertices(const Polygon& p) {
+  std::vector<Point> v = geometry::remove_collinear(p).vertices;
+  bool changed = true;
+  while (changed && v.size() > 3) {
+    changed = false;
+    for (std::size_t i = 0; i < v.size() && v.size() > 3; ++i) {
+      const Point& a = v[(i + v.size() - 1) % v.size()];
+      const Point& c = v[(i + 1) % v.size()];
+      if ((geometry::nearest_on_segment(a, c, v[i]) - v[i]).norm() < kFlatVertexDistance) {
+        v.erase(v.begin() + static_cast<std::ptrdiff_t>(i));
+        changed = true;
+      }
+    }
+  }
+  return Polygon{std::move(v)};
+}
+
+void check_point(const Point& p, const std::string& what) {
+  if (!p.allFinite()) throw Error(what + " is not finite");
+}
+
+// A thick segment: the hull of two circumscribed disk polygons (contains the r-neighbourhood).
+Polygon stadium(const Point& a, const Point& b, double r) {
+  std::vector<Point> pts;
+  for (const Point& e : {a, b}) {
+    const Polygon d = geometry::regular_polygon(Disk{e, r}, kDiskPolygonSides, true);
+    pts.insert(pts.end(), d.vertices.begin(), d.vertices.end());
+  }
+  return geometry::convex_hull(std::move(pts));
+}
+
+double segment_distance(const Point& a, const Point& b, const Point& x) {
+  return (geometry::nearest_on_segment(a, b, x) - x).norm();
+}
+
+double boundary_distance(const Polygon& p, const Point& x) {
+  double best = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0, n = p.size(); i < n; ++i) {
+    best = std::min(best, segment_distance(p.vertices[i], p.vertices[(i + 1) % n], x));
+  }
+  return best;
+}
+
+// The lid of a pocket: its longest edge lying on ∂F_e (both ends and the midpoint on it).
+std::optional<std::pair<Point, Point>> find_lid(const Polygon& pocket, const Polygon& hull,
+                                                double tol) {
+  std::optional<std::pair<Point, Point>> lid;
+  double best = 0;
+  for (std::size_t i = 0, n = pocket.size(); i < n; ++i) {
+    const Point& a = pocket.vertices[i];
+    const Point& b = pocket.vertices[(i + 1) % n];
+    if (boundary_distance(hull, a) > tol || boundary_distance(hull, b) > tol ||
+        boundary_distance(hull, (a + b) / 2) > tol) {
+      continue;
+    }
+    // The edge must lie along one hull edge (not cut a corner of the hull).
+    bool along = false;
+    for (std::size_t k = 0, m = hull.size(); k < m && !along; ++k) {
+      const Point& p = hull.vertices[k];
+      const Point& q = hull.vertices[(k + 1) % m];
+      along = segment_distance(p, q, a) <= tol && segment_distance(p, q, b) <= tol;
+    }
+    if (along && (b - a).norm() > best) {
+      best = (b - a).norm();
+      lid = std::make_pair(a, b);
+    }
+  }
+  return lid;
+}
+
+}  // namespace
+
+MappedSpace build_mapped_space(const SemanticInput& in, double radius, const Point& robot) {
+  if (!std::isfinite(radius) || !(radius > 0)) {
+    throw Error("mapped space: dilation radius must be finite and > 0, got " +
+                std::to_string(radius));
+  }
+  check_point(robot, "mapped space: robot position");
+  const Polygon workspace = geometry::validated(in.workspace, "workspace");
+
+  // The workspace eroded by the radius: W minus thick copies of its edges (conservative).
+  std::vector<Polygon> walls;
+  for (std::size_t i = 0, n = workspace.size(); i < n; ++i) {
+    walls.push_back(stadium(workspace.vertices[i], workspace.vertices[(i + 1) % n], radius));
+  }
+  const RegionSet eroded =
+      geometry::subtract(geometry::to_set(workspace), geometry::unite_all(walls));
+
+  // Dilated obstacles (§2): familiar with miter joins, unknown with round joins, movable
+  // objects as circumscribed polygons. A representative point of each lies strictly inside
+  // its dilation and identifies the cluster it belongs to.
+  enum class Kind { kFamiliar, kUnknown, kMovable };
+  struct Source {
+    Kind kind;
+    std::size_t index;
+    Point rep;
+  };
+  std::vector<Source> sources;
+  std::vector<Polygon> outers;
+  std::vector<RegionSet> dilated;
+  bool has_holes = false;
+  std::vector<Polygon> unknown_dilated;
+  auto add_dilation = [&](const RegionSet& d) {
+    for (const Region& r : d) {
+      outers.push_back(r.outer);
+      has_holes = has_holes || !r.holes.empty();
+    }
+    dilated.push_back(d);
+  };
+  for (std::size_t i = 0; i < in.familiar.size(); ++i) {
+    const std::string what = "familiar obstacle " + std::to_string(i);
+    const Polygon p = geometry::validated(in.familiar[i], what.c_str());
+    add_dilation(geometry::dilate_miter(p, radius + kContactSlack));
+    sources.push_back({Kind::kFamiliar, i, p.vertices.front()});
+  }
+  for (std::size_t i = 0; i < in.unknown.size(); ++i) {
+    const std::string what = "unknown obstacle " + std::to_string(i);
+    const Polygon p = geometry::validated(in.unknown[i], what.c_str());
+    if (!geometry::remove_collinear(p).is_convex()) throw Error(what + " is not convex");
+    const RegionSet d = geometry::dilate_round(p, radius + kContactSlack);
+    add_dilation(d);
+    unknown_dilated.push_back(geometry::convex_hull(d.front().outer.vertices));
+    sources.push_back({Kind::kUnknown, i, p.vertices.front()});
+  }
+  for (std::size_t i = 0; i < in.movable.size(); ++i) {
+    const Disk& d = in.movable[i];
+    const std::string what = "movable object " + std::to_string(i);
+    check_point(d.center, what + " centre");
+    if (!std::isfinite(d.radius) || !(d.radius > 0)) {
+      throw Error(what + ": radius must be finite and > 0, got " + std::to_string(d.radius));
+    }
+    add_dilation(geometry::to_set(geometry::regular_polygon(
+        Disk{d.center, d.radius + radius + kContactSlack}, kDiskPolygonSides, true)));
+    sources.push_back({Kind::kMovable, i, d.center});
+  }
+
+  // Overlapping obstacles are consolidated (§2). A dilated obstacle with a hole (a U closing
+  // on itself) keeps it: then the union is folded region set by region set, holes included.
+  RegionSet obstacles;
+  if (!has_holes) {
+    obstacles = geometry::unite_all(outers);
+  } else {
+    for (const RegionSet& d : dilated) obstacles = geometry::unite(obstacles, d);
+  }
+  const RegionSet free = geometry::subtract(eroded, obstacles);
+
+  MappedSpace m;
+  m.radius = radius;
+  const Region* component = nullptr;
+  for (const Region& r : free) {
+    if (geometry::contains(r, robot)) {
+      component = &r;
+      break;
+    }
+  }
+  if (component == nullptr) {
+    throw Error("mapped space: the robot centre (" + std::to_string(robot.x()) + ", " +
+                std::to_string(robot.y()) + ") is not in the freespace for radius " +
+                std::to_string(radius) +
+                " (it starts inside an obstacle, too close to one, or outside the workspace)");
+  }
+  m.freespace = *component;
+  m.enclosing = geometry::convex_hull(m.freespace.outer.vertices);
+  const double scale = std::sqrt(m.enclosing.area());
+  const double sliver = kRelativeSliverArea * scale * scale;
+
+  // Holes of F_k: one per obstacle cluster.
+  for (const Polygon& hole : m.freespace.holes) {
+    if (hole.area() <= sliver) continue;
+    int n_familiar = 0, n_unknown = 0, n_movable = 0;
+    const Source* last = nullptr;
+    for (const Source& s : sources) {
+      if (!geometry::contains(hole, s.rep)) continue;
+      last = &s;
+      (s.kind == Kind::kFamiliar ? n_familiar : s.kind == Kind::kUnknown ? n_unknown : n_movable)++;
+    }
+    if (n_familiar == 0 && n_unknown + n_movable == 1) {
+      if (last->kind == Kind::kUnknown) {
+        m.unknown.push_back(unknown_dilated[last->index]);
+      } else {
+        const Disk& d = in.movable[last->index];
+        m.movable.push_back(Disk{d.center, d.radius + radius});
+      }
+      continue;
+    }
+    m.familiar.push_back(FamiliarComponent{drop_flat_vertices(hole), std::nullopt});
+  }
+
+  // Pockets between F_k and ∂F_e, each merged into the boundary through its lid.
+  const RegionSet pockets =
+      geometry::subtract(geometry::to_set(m.enclosing), geometry::to_set(m.freespace.outer));
+  for (const Region& r : pockets) {
+    if (r.outer.area() <= sliver) continue;
+    Polygon pocket = drop_flat_vertices(r.outer);
+    auto lid = find_lid(pocket, m.enclosing, kLidTolerance * scale);
+    if (!lid) {
+      throw Error(
+          "mapped space: a pocket of the freespace's convex hull has no edge on the hull "
+          "(internal error; please report the scene)");
+    }
+    m.familiar.push_back(FamiliarComponent{std::move(pocket), lid});
+  }
+  return m;
+}
+
+bool in_freespace(const MappedSpace& m, const Point& x) {
+  check_point(x, "in_freespace: point");
+  return geometry::contains(m.freespace, x);
+}
+
+}  // namespace rearm::reactive

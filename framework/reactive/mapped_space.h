@@ -1,0 +1,65 @@
+// Semantic → mapped space (docs/reactive.md §2; paper Appendix II and III): obstacles dilated
+// by the robot radius (by r + ρ_i while carrying object i), overlapping ones consolidated, the
+// robot's freespace component F_k found, and the enclosing freespace F_e = Conv(F_k) formed.
+// Everything in F_e outside F_k is an obstacle for the diffeomorphism: the holes of F_k (one
+// per obstacle cluster) and the pockets between F_k and ∂F_e, which are merged into the
+// boundary (each pocket touches ∂F_e along one lid edge).
+#pragma once
+
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include "geometry/convex.h"
+#include "geometry/polygon.h"
+
+namespace rearm::reactive {
+
+using geometry::Disk;
+using geometry::Point;
+using geometry::Polygon;
+
+// What perception knows, undilated (paper §II): the workspace, the familiar obstacles localized
+// so far (whole polygons, possibly non-convex), the visible fragments of unknown convex
+// obstacles and the movable objects that are obstacles now (not the carried one).
+struct SemanticInput {
+  Polygon workspace;
+  std::vector<Polygon> familiar;
+  std::vector<Polygon> unknown;
+  std::vector<Disk> movable;
+};
+
+// One polygonal obstacle of the mapped space that the diffeomorphism purges: a cluster hole
+// of F_k (deformed to a disk) or a pocket (merged into ∂F_e through its lid edge).
+struct FamiliarComponent {
+  Polygon polygon;                             // simple, counter-clockwise, no collinear vertex
+  std::optional<std::pair<Point, Point>> lid;  // pockets only: the edge on ∂F_e
+};
+
+struct MappedSpace {
+  double radius = 0;                        // the dilation radius used (r or r + ρ_i)
+  Polygon enclosing;                        // F_e: convex, counter-clockwise
+  geometry::Region freespace;               // F_k: the robot's freespace component
+  std::vector<FamiliarComponent> familiar;  // purged by the diffeomorphism
+  std::vector<Polygon> unknown;             // dilated convex fragments, kept as they are
+  std::vector<Disk> movable;                // dilated movable objects, kept as they are
+};
+
+// Number of sides of the circumscribed polygon that stands for a dilated disk in the exact
+// Boolean operations (a superset of the disk; its boundary is within r·(1/cos(π/n) − 1)).
+inline constexpr int kDiskPolygonSides = 32;
+
+// Builds the mapped space seen from `robot` (the robot's, or the robot–object pair's, centre).
+// Familiar polygons are dilated with miter joins, unknown fragments and the workspace with round
+// joins (the workspace is eroded). Documented fallback: a hole of F_k made of one unknown
+// fragment stays an unknown convex obstacle, one movable object stays a disk; any other
+// cluster (a familiar obstacle, or several overlapping obstacles of any kind) is purged as one
+// familiar component. Throws rearm::Error on invalid input (non-finite numbers, invalid
+// polygons, a non-convex unknown fragment, radius <= 0) and when `robot` is not in the
+// freespace (start inside an obstacle or outside the workspace).
+MappedSpace build_mapped_space(const SemanticInput& input, double radius, const Point& robot);
+
+// Is x in the closed freespace F_k of the mapped space (exact)?
+bool in_freespace(const MappedSpace& m, const Point& x);
+
+}  // namespace rearm::reactive

@@ -1,0 +1,122 @@
+#include "reactive/reactive_controller.h"
+
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "core/error.h"
+#include "geometry/distance.h"
+
+namespace rearm::reactive {
+namespace {
+
+// Documented fallback for a goal on an obstacle boundary: a goal outside the freespace by at
+// most kGoalSnap (m) (the mapped space dilates by r plus a 1e-9 m contact slack, and rounding
+// does the rest) moves to the nearest freespace boundary point, nudged kGoalNudge (m) outward.
+constexpr double kGoalSnap = 1e-6;
+constexpr double kGoalNudge = 1e-9;
+// Model-heading turn (rad) always allowed in one step by the heading guard.
+constexpr double kHeadingGuardSlack = 0.02;
+
+std::optional<Point> snap_goal(const MappedSpace& m, const Point& goal) {
+  geometry::Nearest best = geometry::nearest_on_boundary(m.freespace.outer, goal);
+  for (const Polygon& h : m.freespace.holes) {
+    const geometry::Nearest n = geometry::nearest_on_boundary(h, goal);
+    if (n.distance < best.distance) best = n;
+  }
+  if (best.distance > kGoalSnap) return std::nullopt;
+  const Point away = best.distance > 0 ? Point((best.point - goal) / best.distance) : Point::Zero();
+  for (const Point& q : {Point(best.point + kGoalNudge * away), best.point}) {
+    if (in_freespace(m, q)) return q;
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+ReactiveController::ReactiveController(const DiffeoParams& diffeo, const NavParams& nav)
+    : diffeo_params_(diffeo), nav_(nav) {
+  validate(diffeo_params_);
+  validate(nav_);
+}
+
+void ReactiveController::rebuild(const SemanticInput& map, double radius, const Point& center,
+                                 const Point& goal) {
+  if (!goal.allFinite()) throw Error("reactive controller: goal is not finite");
+  MappedSpace mapped = build_mapped_space(map, radius, center);
+  Point target = goal;
+  if (!in_freespace(mapped, goal)) {
+    if (auto snapped = snap_goal(mapped, goal)) target = *snapped;
+  }
+  if (!in_freespace(mapped, target)) {
+    throw Error("reactive controller: the goal (" + std::to_string(goal.x()) + ", " +
+                std::to_string(goal.y()) +
+                ") is not in the freespace component of the robot (inside an obstacle, or "
+                "disconnected from the robot)");
+  }
+  auto diffeo = std::make_unique<Diffeomorphism>(Diffeomorphism::build(mapped, diffeo_params_));
+  model_goal_ = diffeo->map(target);
+  mapped_ = std::move(mapped);
+  diffeo_ = std::move(diffeo);
+  goal_ = target;
+  ++rebuilds_;
+}
+
+Point ReactiveController::holonomic(const Point& x, double dt) {
+  if (!diffeo_) throw Error("reactive controller: command requested before rebuild()");
+  Point u =
+      fully_actuated_velocity(diffeo_->model(), diffeo_->evaluate(x), model_goal_, nav_, scratch_);
+  for (int k = 0; k < kSafetyHalvings; ++k, u /= 2) {
+    if (geometry::convex_contains(scratch_.lf, diffeo_->map(holonomic_step(x, u, dt)))) return u;
+  }
+  return Point::Zero();
+}
+
+Twist ReactiveController::unicycle(const Pose& pose, double dt) {
+  if (!diffeo_) throw Error("reactive controller: command requested before rebuild()");
+  const DiffeoEval e = diffeo_->evaluate(pose.x);
+  Twist u = unicycle_command(diffeo_->model(), e, pose.psi, model_goal_, nav_, scratch_);
+  // Heading guard: near sharp corners h is strongly anisotropic and dξ/dψ varies by orders of
+  // magnitude within a few degrees of ψ, so one held step of ω, computed from dξ/dψ at the
+  // current ψ, can swing the model heading ξ far past the direction the law turns it to (the
+  // robot then spins in place). ω is halved until the step turns ξ (at fixed x) by no more
+  // than the law's own target angle |t_W| plus the translation's share |v D| dt.
+  const Point t0(std::cos(pose.psi), std::sin(pose.psi));
+  const Point e0 = e.J * t0;
+  const Point to_a = geometry::project_onto_convex(scratch_.lf, model_goal_) - e.h;
+  const double along = to_a.dot(e0), across = e0.x() * to_a.y() - e0.y() * to_a.x();
+  const double t_w = along != 0 ? std::abs(std::atan(across / along)) : std::numbers::pi / 2;
+  const double xi0 = std::atan2(e0.y(), e0.x());
+  const double allowed = t_w + kHeadingGuardSlack;
+  for (int k = 0; k < kSafetyHalvings; ++k) {
+    const double psi1 = pose.psi + u.omega * dt;
+    const Point e1 = e.J * Point(std::cos(psi1), std::sin(psi1));
+    const double turn =
+        std::abs(std::remainder(std::atan2(e1.y(), e1.x()) - xi0, 2 * std::numbers::pi));
+    if (turn <= allowed) break;
+    u.omega /= 2;
+  }
+  for (int k = 0; k < kSafetyHalvings; ++k, u = Twist{u.v / 2, u.omega / 2}) {
+    if (geometry::convex_contains(scratch_.lf, diffeo_->map(unicycle_step(pose, u, dt).x))) {
+      return u;
+    }
+  }
+  return Twist{};
+}
+
+Twist ReactiveController::pair(const Pose& pose, double rho_i, double dt) {
+  if (!diffeo_) throw Error("reactive controller: command requested before rebuild()");
+  const Point xc = pair_center(pose.x, pose.psi, rho_i);
+  Twist u = pair_command(diffeo_->model(), diffeo_->evaluate(xc), pose.psi, rho_i, model_goal_,
+                         nav_, scratch_);
+  for (int k = 0; k < kSafetyHalvings; ++k, u = Twist{u.v / 2, u.omega / 2}) {
+    const Pose next = unicycle_step(pose, u, dt);
+    if (geometry::convex_contains(scratch_.lf,
+                                  diffeo_->map(pair_center(next.x, next.psi, rho_i)))) {
+      return u;
+    }
+  }
+  return Twist{};
+}
+
+}  // namespace rearm::reactive

@@ -1,0 +1,67 @@
+// The reactive controller of the paper's reference [7] as one object: the mapped space and the
+// diffeomorphism for the current semantic map, radius and goal, and the navigation law that
+// turns a pose into a command (docs/reactive.md §2–4). Rebuilt only when the semantic map, the
+// radius (grasp/release) or the goal changes, never inside an integration step.
+#pragma once
+
+#include <memory>
+#include <optional>
+
+#include "reactive/diffeomorphism.h"
+#include "reactive/kinematics.h"
+#include "reactive/mapped_space.h"
+#include "reactive/navigation.h"
+#include "reactive/params.h"
+
+namespace rearm::reactive {
+
+enum class RobotModel { kHolonomic, kUnicycle };
+
+// Halvings of a command before the discrete-time safety filter gives up and stops the robot.
+inline constexpr int kSafetyHalvings = 30;
+
+class ReactiveController {
+ public:
+  ReactiveController(const DiffeoParams& diffeo, const NavParams& nav);
+
+  // Mapped space of `map` dilated by `radius` (the robot's r, or r + ρ_i for the robot–object
+  // pair) seen from `center` (robot or pair centre), its diffeomorphism, and the goal's model
+  // image. Throws rearm::Error when the centre is not in the freespace, or the goal is not in
+  // the freespace component of the centre (blocked or inside an obstacle: the topology check
+  // of the executive decides what to do then). A goal on an obstacle boundary (outside the
+  // freespace by <= 1e-6 m) is snapped to the nearest freespace point (goal() returns it).
+  void rebuild(const SemanticInput& map, double radius, const Point& center, const Point& goal);
+
+  bool ready() const { return diffeo_ != nullptr; }
+  // Commands at the current state (docs/reactive.md §4), to be held for one step of `dt`.
+  // Discrete-time safety: the law keeps the model point inside the local freespace LF(y) in
+  // continuous time; a command held over a step moves the robot on an arc whose second-order
+  // error can cross an obstacle a few millimetres away. The command is halved (v and ω alike,
+  // so the path keeps its shape) until the predicted model point after the step lies in LF(y)
+  // (at most kSafetyHalvings times, then zero). Throw rearm::Error when not ready or when the
+  // state is outside the freespace.
+  Point holonomic(const Point& x, double dt = kDefaultStep);
+  Twist unicycle(const Pose& pose, double dt = kDefaultStep);
+  // Gripper engaged: the pose is the robot's, the controller was rebuilt for the pair
+  // (radius r + ρ_i, centre pair_center(x, ψ, ρ_i)).
+  Twist pair(const Pose& pose, double rho_i, double dt = kDefaultStep);
+
+  const MappedSpace& mapped() const { return mapped_; }
+  const Diffeomorphism& diffeo() const { return *diffeo_; }
+  const Point& goal() const { return goal_; }
+  const Point& model_goal() const { return model_goal_; }
+  const NavParams& nav() const { return nav_; }
+  int rebuilds() const { return rebuilds_; }
+
+ private:
+  DiffeoParams diffeo_params_;
+  NavParams nav_;
+  MappedSpace mapped_;
+  std::unique_ptr<Diffeomorphism> diffeo_;
+  Point goal_ = Point::Zero();
+  Point model_goal_ = Point::Zero();
+  NavScratch scratch_;
+  int rebuilds_ = 0;
+};
+
+}  // namespace rearm::reactive

@@ -1,0 +1,210 @@
+// The semantic map (paper §II, docs/reactive.md §2): familiar memory, visible fragments,
+// movable objects and the version counter, on hand-built scenes whose truth is computed by hand
+// (distances to axis-aligned boxes, fragments of a wall that translate with the robot).
+#include "perception/semantic_map.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "core/error.h"
+#include "perception_oracle.h"
+
+namespace rearm::perception {
+namespace {
+
+using oracle::convex_excess;
+using oracle::is_convex_ccw;
+
+Polygon box(double x0, double y0, double x1, double y1) {
+  return Polygon{{{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}};
+}
+
+// Room 60 x 40 m; familiar obstacles "A" (an L whose nearest point to the negative x axis is
+// (5, 0)), "B" (a unit box above A), "C" (far away); an unknown wall "W" along y in [1, 1.5] for
+// x in [20, 30]; objects M1 and M2.
+World scene() {
+  World w;
+  w.workspace = box(-20, -20, 40, 20);
+  w.familiar.push_back({"A", Polygon{{{5, -1}, {7, -1}, {7, 1}, {6, 1}, {6, 0}, {5, 0}}}});
+  w.familiar.push_back({"B", box(5, 1, 6, 2)});
+  w.familiar.push_back({"C", box(-15, -15, -14, -14)});
+  w.unknown.push_back({"W", box(20, 1, 30, 1.5)});
+  w.movable.push_back({"M1", Disk{Point(0, 5), 0.3}});
+  w.movable.push_back({"M2", Disk{Point(0, -5), 0.25}});
+  return w;
+}
+
+constexpr double kR = 2.0;
+
+TEST(SemanticMapTest, StartsEmptyWithMovableObjectsKnown) {
+  const SemanticMap map(scene(), Sensor({.range = kR}));
+  EXPECT_EQ(map.version(), 0u);
+  EXPECT_TRUE(map.familiar().empty());
+  EXPECT_TRUE(map.unknown().empty());
+  ASSERT_EQ(map.movable().size(), 2u);
+  EXPECT_EQ(map.movable_ids(), (std::vector<std::string>{"M1", "M2"}));
+  EXPECT_EQ(map.movable()[1].center, Point(0, -5));
+  EXPECT_EQ(map.workspace().size(), 4u);
+}
+
+TEST(SemanticMapTest, FamiliarLocalizedExactlyAtDistanceRAndRemembered) {
+  SemanticMap map(scene(), Sensor({.range = kR}));
+  // A's nearest point is (5, 0) for robots on the x axis left of it.
+  EXPECT_FALSE(map.update(Point(2.999, 0)));  // distance 2.001
+  EXPECT_EQ(map.version(), 0u);
+  EXPECT_TRUE(map.update(Point(3.0, 0)));  // distance exactly R: closed disk
+  EXPECT_EQ(map.version(), 1u);
+  EXPECT_EQ(map.familiar_ids(), (std::vector<std::string>{"A"}));
+  EXPECT_TRUE(map.is_localized("A"));
+  EXPECT_FALSE(map.is_localized("B"));  // distance hypot(2, 1) > 2
+  // Localized whole, not as a fragment.
+  EXPECT_EQ(map.familiar()[0].vertices, map.ground_truth().familiar[0].polygon.vertices);
+  // Memory: moving away keeps it, and changes nothing.
+  EXPECT_FALSE(map.update(Point(-10, 0)));
+  EXPECT_EQ(map.version(), 1u);
+  EXPECT_EQ(map.familiar_ids(), (std::vector<std::string>{"A"}));
+  // B then C, in order of localization.
+  EXPECT_TRUE(map.update(Point(5.5, 3.5)));  // B at distance 1.5
+  EXPECT_TRUE(map.update(Point(-12, -14.5)));
+  EXPECT_EQ(map.familiar_ids(), (std::vector<std::string>{"A", "B", "C"}));
+  EXPECT_EQ(map.version(), 3u);
+}
+
+TEST(SemanticMapTest, TwoObstaclesAtOnceBumpTheVersionOnce) {
+  SemanticMap map(scene(), Sensor({.range = kR}));
+  EXPECT_TRUE(map.update(Point(5.5, 0.5)));  // between A and B: both in range
+  EXPECT_EQ(map.version(), 1u);
+  EXPECT_EQ(map.familiar_ids(), (std::vector<std::string>{"A", "B"}));  // world order on ties
+}
+
+TEST(SemanticMapTest, RobotInsideAFamiliarObstacleFarFromItsBoundarySeesIt) {
+  World w = scene();
+  w.familiar.push_back({"big", box(-19, 10, 19, 19)});
+  SemanticMap map(w, Sensor({.range = 1.0}));
+  EXPECT_TRUE(map.update(Point(0, 15)));
+  EXPECT_EQ(map.familiar_ids(), (std::vector<std::string>{"big"}));
+}
+
+TEST(SemanticMapTest, FragmentOfAWallSeenAndForgotten) {
+  SemanticMap map(scene(), Sensor({.range = kR}));
+  EXPECT_TRUE(map.update(Point(25, 0)));
+  ASSERT_EQ(map.unknown().size(), 1u);
+  EXPECT_EQ(map.unknown_ids(), (std::vector<std::string>{"W"}));
+  const Polygon& f = map.unknown()[0];
+  EXPECT_TRUE(is_convex_ccw(f));
+  for (const Point& v : f.vertices) {
+    EXPECT_LE(convex_excess(map.ground_truth().unknown[0].polygon, v), 1e-9);
+    EXPECT_LE((v - Point(25, 0)).norm(), kR * (1 + kFootprintTolerance));
+  }
+  EXPECT_GT(f.area(), 0.5 * 2 * std::sqrt(kR * kR - 1.5 * 1.5));  // contains disk ∩ wall
+  // Out of range: the fragment disappears (not remembered).
+  EXPECT_TRUE(map.update(Point(25, -5)));
+  EXPECT_TRUE(map.unknown().empty());
+  EXPECT_EQ(map.version(), 2u);
+  EXPECT_FALSE(map.update(Point(25, -6)));
+}
+
+TEST(SemanticMapTest, StandingStillNeverChangesTheMap) {
+  SemanticMap map(scene(), Sensor({.range = kR}));
+  const Point x(25.3, 0.1);
+  EXPECT_TRUE(map.update(x));
+  const auto v = map.version();
+  for (int k = 0; k < 1000; ++k) EXPECT_FALSE(map.update(x));
+  // Jitter far below the tolerances (a simulator's rounding) changes nothing either.
+  for (int k = 0; k < 1000; ++k) {
+    const double e = 1e-7 * std::sin(k);
+    EXPECT_FALSE(map.update(x + Point(e, -e)));
+  }
+  EXPECT_EQ(map.version(), v);
+}
+
+TEST(SemanticMapTest, FragmentToleranceAccumulatesMotion) {
+  // Along the wall, far from its ends, every fragment vertex is a footprint vertex or a crossing
+  // of the footprint with the line y = 1: each translates exactly with the robot.
+  SemanticMap map(scene(), Sensor({.range = kR}));
+  EXPECT_TRUE(map.update(Point(23, 0)));
+  const auto v0 = map.version();
+  const double step = 0.4 * kFragmentTolerance;  // bump every third step: 0.4, 0.8, 1.2 > 1
+  int bumps = 0;
+  for (int k = 1; k <= 30; ++k) {
+    const bool changed = map.update(Point(23 + k * step, 0));
+    EXPECT_EQ(changed, k % 3 == 0) << k;
+    bumps += changed;
+  }
+  EXPECT_EQ(bumps, 10);
+  EXPECT_EQ(map.version(), v0 + 10);
+  // Above the tolerance every step changes the map.
+  for (int k = 1; k <= 10; ++k) {
+    EXPECT_TRUE(map.update(Point(24 + k * 2 * kFragmentTolerance, 0)));
+  }
+}
+
+TEST(SemanticMapTest, ObjectMovesBelowToleranceAccumulate) {
+  SemanticMap map(scene(), Sensor({.range = kR}));
+  EXPECT_FALSE(map.move_object("M1", Point(0.0005, 5)));
+  EXPECT_EQ(map.version(), 0u);
+  EXPECT_EQ(map.movable()[0].center, Point(0, 5));        // as last reported
+  EXPECT_EQ(map.object("M1")->center, Point(0.0005, 5));  // the truth
+  EXPECT_FALSE(map.move_object("M1", Point(0.0009, 5)));
+  EXPECT_TRUE(map.move_object("M1", Point(0.0011, 5)));
+  EXPECT_EQ(map.version(), 1u);
+  EXPECT_EQ(map.movable()[0].center, Point(0.0011, 5));
+  EXPECT_TRUE(map.move_object("M2", Point(1, 1)));
+  EXPECT_EQ(map.version(), 2u);
+  EXPECT_EQ(map.movable()[1].center, Point(1, 1));
+  EXPECT_FALSE(map.move_object("M2", Point(1, 1)));
+}
+
+TEST(SemanticMapTest, CarriedObjectIsNotAnObstacle) {
+  SemanticMap map(scene(), Sensor({.range = kR}));
+  EXPECT_TRUE(map.set_carried("M1"));
+  EXPECT_EQ(map.version(), 1u);
+  EXPECT_EQ(map.movable_ids(), (std::vector<std::string>{"M2"}));
+  EXPECT_EQ(*map.carried(), "M1");
+  EXPECT_FALSE(map.set_carried("M1"));
+  // Carrying it around changes nothing.
+  for (int k = 1; k <= 50; ++k) EXPECT_FALSE(map.move_object("M1", Point(k * 0.1, 5)));
+  EXPECT_EQ(map.version(), 1u);
+  // Releasing it puts it back, where it is now.
+  EXPECT_TRUE(map.set_carried(std::nullopt));
+  EXPECT_EQ(map.movable_ids(), (std::vector<std::string>{"M1", "M2"}));
+  EXPECT_EQ(map.movable()[0].center, Point(5, 5));
+  EXPECT_FALSE(map.set_carried(std::nullopt));
+  EXPECT_EQ(map.version(), 2u);
+}
+
+TEST(SemanticMapTest, AddAndRemoveObjects) {
+  SemanticMap map(scene(), Sensor({.range = kR}));
+  EXPECT_TRUE(map.add_object({"M3", Disk{Point(3, 3), 0.2}}));
+  EXPECT_EQ(map.movable_ids(), (std::vector<std::string>{"M1", "M2", "M3"}));
+  EXPECT_TRUE(map.set_carried("M2"));
+  EXPECT_TRUE(map.remove_object("M2"));
+  EXPECT_FALSE(map.carried().has_value());
+  EXPECT_EQ(map.movable_ids(), (std::vector<std::string>{"M1", "M3"}));
+  EXPECT_FALSE(map.object("M2").has_value());
+  EXPECT_EQ(map.version(), 3u);
+}
+
+TEST(SemanticMapTest, AccessorsConvertToTheReactiveInput) {
+  // The four accessors give what reactive::SemanticInput holds: workspace, familiar polygons,
+  // unknown fragments and movable disks.
+  SemanticMap map(scene(), Sensor({.range = kR}));
+  map.update(Point(5.5, 0.5));
+  const Polygon& ws = map.workspace();
+  const std::vector<Polygon>& fam = map.familiar();
+  const std::vector<Polygon>& unk = map.unknown();
+  const std::vector<Disk>& mov = map.movable();
+  EXPECT_EQ(ws.size(), 4u);
+  EXPECT_EQ(fam.size(), 2u);
+  EXPECT_EQ(unk.size(), 0u);
+  EXPECT_EQ(mov.size(), 2u);
+  EXPECT_EQ(map.familiar_ids().size(), fam.size());
+  EXPECT_EQ(map.unknown_ids().size(), unk.size());
+  EXPECT_EQ(map.movable_ids().size(), mov.size());
+}
+
+}  // namespace
+}  // namespace rearm::perception
