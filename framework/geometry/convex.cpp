@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <string>
 
 #include "core/error.h"
 
@@ -270,18 +271,16 @@ Polygon offset_convex(const Polygon& convex, double d, double miter_limit) {
     if (cos_half < 1e-9) {  // a spike (turn of 180°): square cap through both normals
       out.vertices.push_back(v + d * n0);
       out.vertices.push_back(v + d * n1);
-    } else if (1 / cos_half > miter_limit) {
-      // Bevel: cut the two offset lines by the line perpendicular to the bisector u at
-      // distance miter_limit·d from v.
-      const Point u = bis.normalized();
-      const double reach = miter_limit * d;  // along the bisector
-      // Intersection of the bevel line {q : u·(q − v) = reach} with each offset line.
-      const double c0 = n0.dot(u);
-      const double c1 = n1.dot(u);
-      const Point tip0 = v + d * n0 + t0 * ((reach - d * c0) / t0.dot(u));
-      const Point tip1 = v + d * n1 + t1 * ((reach - d * c1) / t1.dot(u));
-      out.vertices.push_back(tip0);
-      out.vertices.push_back(tip1);
+    } else if (1 / cos_half > miter_limit && cos_half < 1 - 1e-12) {
+      // Bevel: the line perpendicular to the bisector at distance miter_limit·d from v meets
+      // offset line 0 at v + d n0 + s t0 (and line 1 symmetrically), with, for the turn φ,
+      // s = d (L − cos(φ/2)) / sin(φ/2) = d (L − 1 + 2 sin²(φ/4)) / sin(φ/2), the second form
+      // exact for small φ (L = 1 gives the tangent to the round corner, s = d tan(φ/4)).
+      const double phi = std::atan2(n0.x() * n1.y() - n0.y() * n1.x(), n0.dot(n1));
+      const double q = std::sin(phi / 4);
+      const double s = d * (miter_limit - 1 + 2 * q * q) / std::sin(phi / 2);
+      out.vertices.push_back(v + d * n0 + s * t0);
+      out.vertices.push_back(v + d * n1 - s * t1);
     } else {
       out.vertices.push_back(v + d * bis / (2 * cos_half * cos_half));
     }
@@ -334,6 +333,99 @@ std::vector<Polygon> triangulate(const Polygon& simple) {
     v.erase(v.begin() + static_cast<std::ptrdiff_t>(best));
   }
   if (v.size() == 3) out.push_back(Polygon{v});
+  return out;
+}
+
+}  // namespace rearm::geometry
+
+namespace rearm::geometry {
+namespace {
+
+double orient2(const Point& a, const Point& b, const Point& c) {
+  return (b.x() - a.x()) * (c.y() - a.y()) - (b.y() - a.y()) * (c.x() - a.x());
+}
+
+// First boundary point of q hit by the ray v + t·d (t > 0), skipping the edges incident to
+// vertex i: the edge index k (the hit lies on (q[k], q[k+1])), the parameter and the point.
+struct RayHit {
+  std::size_t edge = 0;
+  double t = std::numeric_limits<double>::infinity();
+  Point point = Point::Zero();
+};
+
+std::optional<RayHit> first_hit(const Polygon& q, std::size_t i, const Point& d) {
+  const std::size_t n = q.size();
+  const Point& v = q.vertices[i];
+  std::optional<RayHit> best;
+  for (std::size_t k = 0; k < n; ++k) {
+    if (k == i || (k + 1) % n == i) continue;
+    const Point& a = q.vertices[k];
+    const Point& b = q.vertices[(k + 1) % n];
+    const Point e = b - a;
+    const double den = d.x() * e.y() - d.y() * e.x();
+    if (den == 0) continue;
+    const Point w = a - v;
+    const double t = (w.x() * e.y() - w.y() * e.x()) / den;  // along the ray
+    const double s = (w.x() * d.y() - w.y() * d.x()) / den;  // along the edge
+    if (t <= 0 || s < 0 || s > 1) continue;
+    if (!best || t < best->t) {
+      Point hit = s == 0 ? a : (s == 1 ? b : Point(v + t * d));
+      best = RayHit{k, t, hit};
+    }
+  }
+  return best;
+}
+
+}  // namespace
+
+std::vector<Polygon> decompose_by_extensions(const Polygon& simple, std::size_t max_pieces) {
+  std::vector<Polygon> stack{simple};
+  std::vector<Polygon> out;
+  while (!stack.empty()) {
+    Polygon q = std::move(stack.back());
+    stack.pop_back();
+    const std::size_t n = q.size();
+    // The reflex vertex with the shortest extension cut.
+    std::optional<std::pair<std::size_t, RayHit>> cut;
+    for (std::size_t i = 0; i < n; ++i) {
+      const Point& prev = q.vertices[(i + n - 1) % n];
+      const Point& v = q.vertices[i];
+      const Point& next = q.vertices[(i + 1) % n];
+      if (orient2(prev, v, next) >= 0) continue;  // convex or flat
+      for (const Point& d : {Point(v - prev), Point(v - next)}) {
+        const auto hit = first_hit(q, i, d.normalized());
+        if (hit && (!cut || hit->t < cut->second.t)) cut = std::make_pair(i, *hit);
+      }
+    }
+    if (!cut) {
+      out.push_back(std::move(q));
+      continue;
+    }
+    if (out.size() + stack.size() + 2 > max_pieces) {
+      throw Error("decompose_by_extensions: more than " + std::to_string(max_pieces) + " pieces");
+    }
+    const auto [i, hit] = *cut;
+    // Split q at v = q[i] and the hit point h on edge (k, k+1): one side runs v → ... → q[k]
+    // → h, the other h → q[k+1] → ... → v (h is a vertex already when it hit one).
+    const std::size_t k = hit.edge;
+    const Point& h = hit.point;
+    Polygon a, b;
+    for (std::size_t j = i;; j = (j + 1) % n) {
+      a.vertices.push_back(q.vertices[j]);
+      if (j == k) break;
+    }
+    if (a.vertices.back() != h) a.vertices.push_back(h);
+    if (q.vertices[(k + 1) % n] != h) b.vertices.push_back(h);
+    for (std::size_t j = (k + 1) % n;; j = (j + 1) % n) {
+      b.vertices.push_back(q.vertices[j]);
+      if (j == i) break;
+    }
+    if (a.size() < 3 || b.size() < 3) {
+      throw Error("decompose_by_extensions: a cut degenerated (is the polygon simple?)");
+    }
+    stack.push_back(std::move(a));
+    stack.push_back(std::move(b));
+  }
   return out;
 }
 

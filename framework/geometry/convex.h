@@ -82,6 +82,15 @@ std::optional<HalfPlane> separating_half_plane(const Polygon& a, const Polygon& 
 // distance miter_limit·d from the vertex. The result is convex and contains the d-dilation.
 Polygon offset_convex(const Polygon& convex, double d, double miter_limit = 2.0);
 
+// Convex decomposition by reflex-vertex extensions: while a piece has a reflex vertex, it is
+// cut along the continuation of one of that vertex's edges (the shorter of the two cuts) up to
+// the first boundary point hit. Orthogonal shapes (L, U, T, staircase, cross) fall apart into
+// rectangles, with no sharp angle a diagonal partition makes. A cut's end point is a new vertex
+// shared bit for bit by both sides; pieces keep their 180° vertices. The polygon must be simple,
+// counter-clockwise, without collinear vertices; throws rearm::Error when a cut finds no
+// boundary (not simple) or after `max_pieces` pieces.
+std::vector<Polygon> decompose_by_extensions(const Polygon& simple, std::size_t max_pieces = 256);
+
 // Ear-clipping triangulation of a simple counter-clockwise polygon without collinear
 // vertices: n − 2 triangles whose vertices are the input vertices (bit for bit), so shared
 // edges are exact. Throws rearm::Error when no ear is found (the polygon is not simple).

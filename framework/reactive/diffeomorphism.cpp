@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <deque>
 #include <limits>
 #include <string>
@@ -33,6 +32,10 @@ constexpr double kCollarContainsTolerance = 1e-9;
 // the rounding of β on the boundary (~1e-15) meets a vanishing σ_γ near the corners of the
 // adjacency edge, where σ = σ_γσ_β / (σ_γσ_β + 1 − σ_β) is 0/0 in the limit.
 constexpr double kBoundarySnap = 1e-12;
+// Collars are the augmented piece offset by ε with corners bevelled at ε (miter limit 1):
+// the bevel lines are tangent to the round ε-dilation, so a collar reaches no farther than
+// about ε from its piece (a longer miter would spread a sharp corner's switch 2ε away).
+constexpr double kCollarMiterLimit = 1.0;
 // Purge centres must lie at least this far (m) from the adjacency edge.
 constexpr double kMinCenterDepth = 1e-9;
 
@@ -336,28 +339,47 @@ Diffeomorphism Diffeomorphism::build(const MappedSpace& m, const DiffeoParams& p
   d.model_.convex = m.unknown;
   const Polygon& enclosing = m.enclosing;
 
-  // §3.1–3.2: convex decomposition of every component (slivers dropped) and its tree; when
-  // no root admits a tree (flat corners at shared edges), the component is triangulated
-  // instead, whose pieces have no flat corner.
-  std::vector<Tree> trees(m.familiar.size());
+  // §3.1–3.2: convex decompositions of every component (slivers dropped) with their trees,
+  // in order of preference: cuts along reflex-vertex extensions (rectangles for orthogonal
+  // shapes, no sharp angles), with flat corners split if needed; CGAL's partition (fewest
+  // pieces), likewise; a triangulation (no flat corners at all). The first candidate whose
+  // collars can all be built (§3.4) is used.
+  std::vector<std::vector<Tree>> candidates(m.familiar.size());
   std::vector<std::vector<Polygon>> pieces(m.familiar.size());
   for (std::size_t ci = 0; ci < m.familiar.size(); ++ci) {
     const FamiliarComponent& comp = m.familiar[ci];
-    std::vector<Polygon> P;
-    for (Polygon& p : geometry::convex_partition(comp.polygon)) {
-      if (p.area() > params.sliver_area) P.push_back(std::move(p));
+    auto usable = [&](std::vector<Polygon> raw) {
+      std::vector<Polygon> kept;
+      for (Polygon& p : raw) {
+        if (p.area() > params.sliver_area) kept.push_back(std::move(p));
+      }
+      insert_junctions(kept, comp.polygon.vertices);
+      return kept;
+    };
+    auto add = [&](const std::vector<Polygon>& P) {
+      if (P.empty()) return;
+      if (auto t = choose_tree(P, comp.lid)) {
+        candidates[ci].push_back(std::move(*t));
+      } else if (auto u = choose_tree(split_flat_corners(P, params.sliver_area), comp.lid)) {
+        candidates[ci].push_back(std::move(*u));
+      }
+    };
+    try {
+      add(usable(geometry::decompose_by_extensions(comp.polygon)));
+    } catch (const Error&) {
+      // not simple enough for extension cuts: the other decompositions remain
     }
-    if (P.empty()) continue;  // a sliver component: nothing to purge
-    insert_junctions(P, comp.polygon.vertices);
-    auto tree = choose_tree(P, comp.lid);
-    if (!tree) tree = choose_tree(split_flat_corners(P, params.sliver_area), comp.lid);
-    if (!tree) tree = choose_tree(geometry::triangulate(comp.polygon), comp.lid);
-    if (!tree) {
+    add(usable(geometry::convex_partition(comp.polygon)));
+    try {
+      add(geometry::triangulate(comp.polygon));
+    } catch (const Error&) {
+    }
+    if (candidates[ci].empty()) {
+      if (comp.polygon.area() <= params.sliver_area) continue;  // a sliver: nothing to purge
       throw Error("diffeomorphism: familiar component " + std::to_string(ci) +
                   " admits no purging tree (its convex pieces are not edge-connected)");
     }
-    trees[ci] = std::move(*tree);
-    pieces[ci] = trees[ci].pieces;
+    pieces[ci] = candidates[ci].front().pieces;  // what other components' collars avoid
   }
 
   // Convex obstacles a collar must avoid: pieces (tagged by component and piece), unknown
@@ -381,17 +403,17 @@ Diffeomorphism Diffeomorphism::build(const MappedSpace& m, const DiffeoParams& p
   for (const Polygon& e : extra) blockers.push_back({-1, -1, &e});
 
   std::vector<Disk> root_disks;
-  for (std::size_t ci = 0; ci < pieces.size(); ++ci) {
-    const std::vector<Polygon>& P = pieces[ci];
-    if (P.empty()) continue;
+  // The purges of component ci over one candidate tree (§3.3–3.7); throws rearm::Error when a
+  // centre or a collar cannot be built.
+  auto build_component = [&](std::size_t ci, const Tree& tree, std::vector<Purge>& out,
+                             std::vector<Disk>& disks) {
+    const std::vector<Polygon>& P = tree.pieces;
     const FamiliarComponent& comp = m.familiar[ci];
     const int n = static_cast<int>(P.size());
-
-    const std::vector<Node>& nodes = trees[ci].nodes;
-    const std::vector<int>& order = trees[ci].order;
+    const std::vector<Node>& nodes = tree.nodes;
+    const std::vector<int>& order = tree.order;
     std::vector<int> rank(n);
     for (int i = 0; i < n; ++i) rank[order[i]] = i;
-
     const int first_purge = static_cast<int>(d.purges_.size());
     for (int i = 0; i < n; ++i) {
       const int k = order[i];
@@ -465,7 +487,7 @@ Diffeomorphism Diffeomorphism::build(const MappedSpace& m, const DiffeoParams& p
         pu.v0 = v0;
         pu.v1 = v1;
         shape = augmented(piece, node.edge, c);
-        collar = geometry::offset_convex(shape, params.epsilon, geometry::kMiterLimit);
+        collar = geometry::offset_convex(shape, params.epsilon, kCollarMiterLimit);
         collar = geometry::clip(collar, geometry::left_of(v0, c));
         collar = geometry::clip(collar, geometry::left_of(c, v1));
         for (std::size_t e = 0, ne = enclosing.size(); e < ne; ++e) {
@@ -488,19 +510,23 @@ Diffeomorphism Diffeomorphism::build(const MappedSpace& m, const DiffeoParams& p
         pu.center = c;
         pu.radius = params.root_radius_fraction * dist;
         collar = geometry::intersect_convex(
-            geometry::offset_convex(piece, params.epsilon, geometry::kMiterLimit), enclosing);
-        root_disks.push_back(Disk{c, pu.radius});
+            geometry::offset_convex(piece, params.epsilon, kCollarMiterLimit), enclosing);
+        disks.push_back(Disk{c, pu.radius});
       }
       // §3.4: the collar avoids every obstacle still present when this piece is purged
       // (later pieces of its component except its parent, every other component, unknown and
       // movable obstacles): each overlapping one is cut off by a line separating it from A.
       const int parent_piece = node.parent;
+      std::vector<const Polygon*> present;  // later pieces of this component but the parent
+      for (int j = 0; j < n; ++j) {
+        if (j != k && j != parent_piece && rank[j] > i) present.push_back(&P[j]);
+      }
       for (const Blocker& b : blockers) {
-        if (b.component == static_cast<int>(ci)) {
-          if (b.piece == k || b.piece == parent_piece || rank[b.piece] < i) continue;
-        }
-        if (!geometry::convex_overlap(collar, *b.poly)) continue;
-        const auto cut = geometry::separating_half_plane(shape, *b.poly, 1e-9);
+        if (b.component != static_cast<int>(ci)) present.push_back(b.poly);
+      }
+      for (const Polygon* blocker : present) {
+        if (!geometry::convex_overlap(collar, *blocker)) continue;
+        const auto cut = geometry::separating_half_plane(shape, *blocker, 1e-9);
         if (!cut) {
           throw Error("diffeomorphism: a convex piece of familiar component " + std::to_string(ci) +
                       " overlaps another obstacle; obstacles must be consolidated first");
@@ -518,8 +544,28 @@ Diffeomorphism Diffeomorphism::build(const MappedSpace& m, const DiffeoParams& p
       pu.gamma_planes = edge_planes(collar);
       pu.collar_box = Eigen::AlignedBox2d();
       for (const Point& v : collar.vertices) pu.collar_box.extend(v);
-      d.purges_.push_back(std::move(pu));
+      out.push_back(std::move(pu));
     }
+  };
+  for (std::size_t ci = 0; ci < candidates.size(); ++ci) {
+    std::string failure;
+    bool built = false;
+    for (const Tree& tree : candidates[ci]) {
+      std::vector<Purge> purges;
+      std::vector<Disk> disks;
+      try {
+        build_component(ci, tree, purges, disks);
+      } catch (const Error& e) {
+        failure = e.what();
+        continue;
+      }
+      d.purges_.insert(d.purges_.end(), std::make_move_iterator(purges.begin()),
+                       std::make_move_iterator(purges.end()));
+      root_disks.insert(root_disks.end(), disks.begin(), disks.end());
+      built = true;
+      break;
+    }
+    if (!built && !candidates[ci].empty()) throw Error(failure);
   }
   d.model_.disks = root_disks;
   d.model_.disks.insert(d.model_.disks.end(), m.movable.begin(), m.movable.end());

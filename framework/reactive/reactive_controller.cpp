@@ -15,7 +15,7 @@ namespace {
 // does the rest) moves to the nearest freespace boundary point, nudged kGoalNudge (m) outward.
 constexpr double kGoalSnap = 1e-6;
 constexpr double kGoalNudge = 1e-9;
-// Model-heading turn (rad) always allowed in one step by the heading guard.
+// Model-heading turn (rad) always allowed in one step by the discrete-time guard.
 constexpr double kHeadingGuardSlack = 0.02;
 
 std::optional<Point> snap_goal(const MappedSpace& m, const Point& goal) {
@@ -76,30 +76,28 @@ Twist ReactiveController::unicycle(const Pose& pose, double dt) {
   if (!diffeo_) throw Error("reactive controller: command requested before rebuild()");
   const DiffeoEval e = diffeo_->evaluate(pose.x);
   Twist u = unicycle_command(diffeo_->model(), e, pose.psi, model_goal_, nav_, scratch_);
-  // Heading guard: near sharp corners h is strongly anisotropic and dξ/dψ varies by orders of
-  // magnitude within a few degrees of ψ, so one held step of ω, computed from dξ/dψ at the
-  // current ψ, can swing the model heading ξ far past the direction the law turns it to (the
-  // robot then spins in place). ω is halved until the step turns ξ (at fixed x) by no more
-  // than the law's own target angle |t_W| plus the translation's share |v D| dt.
+  // Discrete-time guard: near sharp corners h is strongly anisotropic, dξ/dψ reaches 10–20
+  // and D²h is large, so the two parts of ξ̇ (the turn, and the rotation the translation
+  // causes, which ω compensates) nearly cancel in continuous time but not over a held step:
+  // the model heading ξ then swings by tenths of a radian per step and the robot chatters.
+  // v and ω are halved together until the predicted step keeps the model point in LF(y) (the
+  // safety filter) and turns ξ by no more than twice the law's own turn k_ω|t_W| dt plus
+  // kHeadingGuardSlack (an ordinary step turns ξ by at most ω_max dt = 0.01 rad).
   const Point t0(std::cos(pose.psi), std::sin(pose.psi));
   const Point e0 = e.J * t0;
   const Point to_a = geometry::project_onto_convex(scratch_.lf, model_goal_) - e.h;
   const double along = to_a.dot(e0), across = e0.x() * to_a.y() - e0.y() * to_a.x();
   const double t_w = along != 0 ? std::abs(std::atan(across / along)) : std::numbers::pi / 2;
   const double xi0 = std::atan2(e0.y(), e0.x());
-  const double allowed = t_w + kHeadingGuardSlack;
-  for (int k = 0; k < kSafetyHalvings; ++k) {
-    const double psi1 = pose.psi + u.omega * dt;
-    const Point e1 = e.J * Point(std::cos(psi1), std::sin(psi1));
+  const double allowed = 2 * nav_.k_omega * t_w * dt + kHeadingGuardSlack;
+  for (int k = 0; k < kSafetyHalvings; ++k, u = Twist{u.v / 2, u.omega / 2}) {
+    const Pose next = unicycle_step(pose, u, dt);
+    const DiffeoEval en = diffeo_->evaluate(next.x);
+    if (!geometry::convex_contains(scratch_.lf, en.h)) continue;
+    const Point e1 = en.J * Point(std::cos(next.psi), std::sin(next.psi));
     const double turn =
         std::abs(std::remainder(std::atan2(e1.y(), e1.x()) - xi0, 2 * std::numbers::pi));
-    if (turn <= allowed) break;
-    u.omega /= 2;
-  }
-  for (int k = 0; k < kSafetyHalvings; ++k, u = Twist{u.v / 2, u.omega / 2}) {
-    if (geometry::convex_contains(scratch_.lf, diffeo_->map(unicycle_step(pose, u, dt).x))) {
-      return u;
-    }
+    if (turn <= allowed) return u;
   }
   return Twist{};
 }
