@@ -341,6 +341,9 @@ std::vector<Polygon> triangulate(const Polygon& simple) {
 namespace rearm::geometry {
 namespace {
 
+// Relative turn (sine) below which a vertex counts as flat in the extension decomposition.
+constexpr double kFlatTurn = 1e-9;
+
 double orient2(const Point& a, const Point& b, const Point& c) {
   return (b.x() - a.x()) * (c.y() - a.y()) - (b.y() - a.y()) * (c.x() - a.x());
 }
@@ -385,43 +388,59 @@ std::vector<Polygon> decompose_by_extensions(const Polygon& simple, std::size_t 
     Polygon q = std::move(stack.back());
     stack.pop_back();
     const std::size_t n = q.size();
-    // The reflex vertex with the shortest extension cut.
-    std::optional<std::pair<std::size_t, RayHit>> cut;
+    // Extension cuts of every reflex vertex, shortest first; the first that splits q into
+    // two proper polygons is made.
+    std::vector<std::pair<std::size_t, RayHit>> cuts;
+    bool reflex = false;
     for (std::size_t i = 0; i < n; ++i) {
       const Point& prev = q.vertices[(i + n - 1) % n];
       const Point& v = q.vertices[i];
       const Point& next = q.vertices[(i + 1) % n];
-      if (orient2(prev, v, next) >= 0) continue;  // convex or flat
+      // Reflex beyond rounding: the cut points are rounded onto their lines, which can turn a
+      // 180° vertex into a reflex one by an ulp (relative turn tolerance kFlatTurn).
+      if (orient2(prev, v, next) >= -kFlatTurn * (v - prev).norm() * (next - v).norm()) continue;
+      reflex = true;
       for (const Point& d : {Point(v - prev), Point(v - next)}) {
-        const auto hit = first_hit(q, i, d.normalized());
-        if (hit && (!cut || hit->t < cut->second.t)) cut = std::make_pair(i, *hit);
+        if (const auto hit = first_hit(q, i, d.normalized())) cuts.emplace_back(i, *hit);
       }
     }
-    if (!cut) {
+    if (!reflex) {
       out.push_back(std::move(q));
       continue;
     }
+    std::sort(cuts.begin(), cuts.end(),
+              [](const auto& l, const auto& r) { return l.second.t < r.second.t; });
+    Polygon a, b;
+    bool split = false;
+    for (const auto& [i, hit] : cuts) {
+      // Split q at v = q[i] and the hit point h on edge (k, k+1): one side runs v → ... →
+      // q[k] → h, the other h → q[k+1] → ... → v (h is a vertex already when it hit one).
+      const std::size_t k = hit.edge;
+      const Point& h = hit.point;
+      a.vertices.clear();
+      b.vertices.clear();
+      for (std::size_t j = i;; j = (j + 1) % n) {
+        a.vertices.push_back(q.vertices[j]);
+        if (j == k) break;
+      }
+      if (a.vertices.back() != h) a.vertices.push_back(h);
+      if (q.vertices[(k + 1) % n] != h) b.vertices.push_back(h);
+      for (std::size_t j = (k + 1) % n;; j = (j + 1) % n) {
+        b.vertices.push_back(q.vertices[j]);
+        if (j == i) break;
+      }
+      if (a.size() >= 3 && b.size() >= 3 && a.signed_area() > 0 && b.signed_area() > 0) {
+        split = true;
+        break;
+      }
+    }
+    if (!split) {
+      throw Error(
+          "decompose_by_extensions: no extension cut splits a piece (is the polygon "
+          "simple?)");
+    }
     if (out.size() + stack.size() + 2 > max_pieces) {
       throw Error("decompose_by_extensions: more than " + std::to_string(max_pieces) + " pieces");
-    }
-    const auto [i, hit] = *cut;
-    // Split q at v = q[i] and the hit point h on edge (k, k+1): one side runs v → ... → q[k]
-    // → h, the other h → q[k+1] → ... → v (h is a vertex already when it hit one).
-    const std::size_t k = hit.edge;
-    const Point& h = hit.point;
-    Polygon a, b;
-    for (std::size_t j = i;; j = (j + 1) % n) {
-      a.vertices.push_back(q.vertices[j]);
-      if (j == k) break;
-    }
-    if (a.vertices.back() != h) a.vertices.push_back(h);
-    if (q.vertices[(k + 1) % n] != h) b.vertices.push_back(h);
-    for (std::size_t j = (k + 1) % n;; j = (j + 1) % n) {
-      b.vertices.push_back(q.vertices[j]);
-      if (j == i) break;
-    }
-    if (a.size() < 3 || b.size() < 3) {
-      throw Error("decompose_by_extensions: a cut degenerated (is the polygon simple?)");
     }
     stack.push_back(std::move(a));
     stack.push_back(std::move(b));

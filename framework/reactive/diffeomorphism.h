@@ -6,6 +6,22 @@
 // the composition of all purges, deepest first; evaluate() returns h, Dh and D²h by the chain
 // rule. h is the identity outside the collars, and a C∞ diffeomorphism of the freespace away
 // from sharp corners.
+//
+// Choices where reactive.md leaves room, or departs from the authors' code (each argued at its
+// place in diffeomorphism.cpp):
+//  - Decomposition: cuts along reflex-vertex extensions first (rectangles for L, U, T,
+//    staircase and cross shapes; no sharp angles), then CGAL's partition, then a
+//    triangulation; the first whose collars can all be built is used. A piece whose side runs
+//    on past a shared edge (a flat corner) must be the parent of that adjacency, or is split.
+//  - Centres: c_i is taken on reactive.md's ray but inside the parent *and* the half-planes of
+//    the piece's two edges next to the adjacency edge, so [v0, c_i, v1, ...] is convex and the
+//    piece lies in the cone of c_i (both needed for det Dh > 0 and for the boundary to map
+//    onto the adjacency edge).
+//  - Collars: the augmented piece offset by ε with bevelled corners (reach ≈ ε), clipped by
+//    the cone at c_i and by F_e; an obstacle still present is cut off by a line separating it
+//    from the augmented piece (collars stay convex, so γ is exact), not by subtraction.
+//  - β: over the piece's own edges (reactive.md §3.5). Points within 1e-12 m of a piece count
+//    as on it (σ = 1), which fixes the 0/0 of σ at the adjacency corners on the boundary.
 #pragma once
 
 #include <Eigen/Geometry>

@@ -378,5 +378,116 @@ TEST(Convex, SeparatingHalfPlaneSeparates) {
   EXPECT_GT(h->value(Point(1.5, 0.5)), 0);
 }
 
+std::vector<Polygon> remove_flat(const std::vector<Polygon>& pieces) {
+  std::vector<Polygon> out;
+  for (const Polygon& q : pieces) out.push_back(remove_collinear(q));
+  return out;
+}
+
+// Reflex vertices of a counter-clockwise polygon (exact doubles: any negative turn).
+int reflex_count(const Polygon& p) {
+  int r = 0;
+  for (std::size_t i = 0, n = p.size(); i < n; ++i) {
+    const Point& a = p.vertices[(i + n - 1) % n];
+    const Point& b = p.vertices[i];
+    const Point& c = p.vertices[(i + 1) % n];
+    r += cross(b - a, c - b) < -1e-12 * (b - a).norm() * (c - b).norm();
+  }
+  return r;
+}
+
+// Offsets contain the d-dilation (points at distance d of the boundary, outside, are inside
+// the offset) and reach at most d / cos(φ/2) (miter) or about miter_limit·d (bevel).
+TEST(Convex, OffsetContainsTheDilationAndStaysClose) {
+  Rng rng(17);
+  for (int trial = 0; trial < static_cast<int>(test_support::scaled(300, 20)); ++trial) {
+    const Polygon p = random_convex(rng, 3 + static_cast<int>(rng.index(8)), Point(0, 0), 2.0);
+    const double d = rng.uniform(0.05, 1.0);
+    for (const double limit : {1.0, 2.0}) {
+      const Polygon o = offset_convex(p, d, limit);
+      ASSERT_TRUE(remove_collinear(o).is_convex()) << "trial " << trial;
+      for (int k = 0; k < 400; ++k) {
+        const double a = 2 * kPi * k / 400;
+        // The farthest point of the polygon in direction a, pushed out by d (on the boundary
+        // of the round dilation).
+        const Point u(std::cos(a), std::sin(a));
+        Point far = p.vertices.front();
+        for (const Point& v : p.vertices) {
+          if (v.dot(u) > far.dot(u)) far = v;
+        }
+        EXPECT_TRUE(convex_contains(o, far + d * (1 - 1e-9) * u, 1e-9)) << "trial " << trial;
+      }
+      for (const Point& v : o.vertices) {
+        // Every offset vertex lies within limit·d·sqrt(2) of the polygon (a bevel corner).
+        EXPECT_LE(boundary_distance(p, v), limit * d * std::sqrt(2.0) + 1e-9);
+      }
+    }
+  }
+}
+
+// Triangulation: n − 2 counter-clockwise triangles of the polygon's vertices that tile it.
+TEST(Convex, TriangulationTilesTheStar) {
+  Rng rng(23);
+  for (int trial = 0; trial < static_cast<int>(test_support::scaled(200, 10)); ++trial) {
+    const Polygon p = remove_collinear(
+        test_support::random_star(rng, 5 + static_cast<int>(rng.index(20)), 1.0, 3.0));
+    const std::vector<Polygon> t = triangulate(p);
+    ASSERT_EQ(t.size(), p.size() - 2);
+    double area = 0;
+    for (const Polygon& tri : t) {
+      ASSERT_EQ(tri.size(), 3u);
+      EXPECT_GT(tri.signed_area(), 0);
+      EXPECT_TRUE(ray_cast_inside(p, tri.centroid()));
+      for (const Point& v : tri.vertices) {
+        EXPECT_NE(std::find(p.vertices.begin(), p.vertices.end(), v), p.vertices.end());
+      }
+      area += tri.area();
+    }
+    EXPECT_NEAR(area, p.area(), 1e-9 * p.area());
+    for (std::size_t i = 0; i < t.size(); ++i) {
+      for (std::size_t j = i + 1; j < t.size(); ++j) EXPECT_FALSE(convex_overlap(t[i], t[j], 1e-9));
+    }
+  }
+}
+
+// Decomposition by reflex extensions: convex, interior-disjoint pieces of the polygon's area;
+// an orthogonal polygon falls apart into rectangles.
+TEST(Convex, ExtensionDecompositionTilesWithConvexPieces) {
+  Rng rng(29);
+  for (int trial = 0; trial < static_cast<int>(test_support::scaled(200, 10)); ++trial) {
+    const Polygon p = remove_collinear(
+        test_support::random_star(rng, 5 + static_cast<int>(rng.index(15)), 1.0, 3.0));
+    const std::vector<Polygon> pieces = decompose_by_extensions(p);
+    double area = 0;
+    for (const Polygon& q : pieces) {
+      EXPECT_EQ(reflex_count(q), 0) << "trial " << trial;
+      EXPECT_GT(q.signed_area(), 0);
+      EXPECT_TRUE(ray_cast_inside(p, q.centroid())) << "trial " << trial;
+      area += q.area();
+    }
+    EXPECT_NEAR(area, p.area(), 1e-9 * p.area()) << "trial " << trial;
+    for (std::size_t i = 0; i < pieces.size(); ++i) {
+      for (std::size_t j = i + 1; j < pieces.size(); ++j) {
+        EXPECT_FALSE(convex_overlap(pieces[i], pieces[j], 1e-9)) << "trial " << trial;
+      }
+    }
+  }
+  // A plus sign: 12 vertices, 4 reflex; every piece an axis-aligned rectangle.
+  const Polygon cross_shape{{Point(1, 0), Point(2, 0), Point(2, 1), Point(3, 1), Point(3, 2),
+                             Point(2, 2), Point(2, 3), Point(1, 3), Point(1, 2), Point(0, 2),
+                             Point(0, 1), Point(1, 1)}};
+  const std::vector<Polygon> pieces = decompose_by_extensions(cross_shape);
+  double area = 0;
+  for (const Polygon& q : remove_flat(pieces)) {
+    ASSERT_EQ(q.size(), 4u);
+    for (std::size_t i = 0; i < 4; ++i) {
+      const Point e = q.vertices[(i + 1) % 4] - q.vertices[i];
+      EXPECT_TRUE(e.x() == 0 || e.y() == 0);
+    }
+    area += q.area();
+  }
+  EXPECT_DOUBLE_EQ(area, 5.0);
+}
+
 }  // namespace
 }  // namespace rearm::geometry
