@@ -217,46 +217,35 @@ void BM_DiffeoConstruction(benchmark::State& state) {
   annotate(state, *s, K, false);
 }
 
-void BM_DiffeoEvaluate(benchmark::State& state) {
+// Times `call(i)` for i cycling over the setup's query points.
+template <typename Call>
+void cycle_points(benchmark::State& state, Call&& call) {
   const int K = static_cast<int>(state.range(0));
   const Setup* s = setup_for(state, K);
   if (s == nullptr) return;
-  const Diffeomorphism& d = *s->diffeo;
   std::size_t i = 0;
   for (auto _ : state) {
-    DiffeoEval e = d.evaluate(s->points[i]);
-    benchmark::DoNotOptimize(e);
+    auto r = call(*s, i);
+    benchmark::DoNotOptimize(r);
     i = (i + 1) % s->points.size();
   }
   annotate(state, *s, K, true);
+}
+
+void BM_DiffeoEvaluate(benchmark::State& state) {
+  cycle_points(state,
+               [](const Setup& s, std::size_t i) { return s.diffeo->evaluate(s.points[i]); });
 }
 
 void BM_HolonomicCommand(benchmark::State& state) {
-  const int K = static_cast<int>(state.range(0));
-  const Setup* s = setup_for(state, K);
-  if (s == nullptr) return;
-  ReactiveController& c = *s->controller;
-  std::size_t i = 0;
-  for (auto _ : state) {
-    Point u = c.holonomic(s->points[i]);
-    benchmark::DoNotOptimize(u);
-    i = (i + 1) % s->points.size();
-  }
-  annotate(state, *s, K, true);
+  cycle_points(state,
+               [](const Setup& s, std::size_t i) { return s.controller->holonomic(s.points[i]); });
 }
 
 void BM_UnicycleCommand(benchmark::State& state) {
-  const int K = static_cast<int>(state.range(0));
-  const Setup* s = setup_for(state, K);
-  if (s == nullptr) return;
-  ReactiveController& c = *s->controller;
-  std::size_t i = 0;
-  for (auto _ : state) {
-    auto u = c.unicycle(Pose{s->points[i], s->headings[i]});
-    benchmark::DoNotOptimize(u);
-    i = (i + 1) % s->points.size();
-  }
-  annotate(state, *s, K, true);
+  cycle_points(state, [](const Setup& s, std::size_t i) {
+    return s.controller->unicycle(Pose{s.points[i], s.headings[i]});
+  });
 }
 
 void BM_ReactiveRebuild(benchmark::State& state) {
