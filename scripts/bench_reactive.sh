@@ -92,7 +92,7 @@ lines = [
     "the identity at a point. In parentheses: the authors' C++ (`vvasilo/semnav`, "
     "-O3 -ffast-math) on this machine, from docs/reactive.md §7 (not rerun here); their "
     "command is a unicycle command with a 100-ray LIDAR, ours the local freespace polygon. Piece "
-    "counts differ from theirs (rearm's own convex partition of the same shapes). Google "
+    "counts differ from theirs (rearm's own convex decomposition of the same shapes). Google "
     "Benchmark's \"Library was built as DEBUG\" warning is about Debian's libbenchmark package, "
     "not rearm's build.",
     "",
