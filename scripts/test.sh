@@ -21,7 +21,7 @@ ASAN_TESTS+=";translate_lasso_test;mission_controller_test;mission_property_test
 ASAN_TESTS+=";polygon_test;boolean_test;dilation_test;partition_test;distance_test;convex_test"
 ASAN_TESTS+=";world_test;sensor_test;semantic_map_test;perception_property_test"
 ASAN_TESTS+=";diffeomorphism_test;degenerate_input_test;local_freespace_test;navigation_test"
-ASAN_TESTS+=";grasp_test;kinematics_test;closed_loop_test"
+ASAN_TESTS+=";grasp_test;kinematics_test;closed_loop_test;topology_check_test;topology_property_test"
 cmake -S . -B "$ASAN_BUILD" -DCMAKE_BUILD_TYPE=Debug -DREARM_SANITIZE=ON -DREARM_WERROR=ON \
   -DREARM_BUILD_TESTS=ON -DREARM_BUILD_BENCH=OFF "-DREARM_TESTS=$ASAN_TESTS"
 cmake --build "$ASAN_BUILD" -j"$JOBS"

@@ -1,0 +1,379 @@
+// Appendix III of the paper: freespace components, blocking objects, feasibility
+// (docs/executive.md, "Topology check"). The contract and the choices are in the header.
+#include "topology/topology_check.h"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <deque>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <utility>
+
+#include "core/error.h"
+#include "geometry/boolean.h"
+#include "geometry/dilation.h"
+#include "geometry/distance.h"
+
+namespace rearm::topology {
+namespace {
+
+using geometry::Disk;
+using geometry::Point;
+using geometry::Polygon;
+using geometry::Region;
+using geometry::RegionSet;
+using Box = Eigen::AlignedBox2d;
+
+void check_point(const Point& p, const std::string& what) {
+  if (!p.allFinite()) throw Error("topology: " + what + " is not finite");
+}
+
+std::string format(const Point& p) {
+  std::ostringstream s;
+  s << "(" << p.x() << ", " << p.y() << ")";
+  return s.str();
+}
+
+Region validated_region(const Region& r, const std::string& what) {
+  Region out;
+  out.outer = geometry::validated(r.outer, (what + " outer boundary").c_str());
+  for (std::size_t k = 0; k < r.holes.size(); ++k) {
+    out.holes.push_back(
+        geometry::validated(r.holes[k], (what + " hole " + std::to_string(k)).c_str()));
+  }
+  return out;
+}
+
+Box box_of(const Polygon& p) {
+  Box b;
+  for (const Point& v : p.vertices) b.extend(v);
+  return b;
+}
+
+// Closures touch (exact), after a bounding-box filter.
+bool touch(const Region& a, const Box& box_a, const Region& b, const Box& box_b) {
+  return box_a.intersects(box_b) && geometry::intersects(RegionSet{a}, RegionSet{b});
+}
+
+// The polygon grown by d > 0 (a superset of its d-neighbourhood): a mitered offset when it is
+// convex, else the outer boundary of its round dilation.
+Polygon grown(const Polygon& p, double d) {
+  const Polygon c = geometry::remove_collinear(p);
+  if (c.size() >= 3 && c.is_convex()) return geometry::offset_convex(c, d);
+  return geometry::dilate_round(p, d).front().outer;
+}
+
+// A thick segment: the hull of two circumscribed disk polygons (contains the r-neighbourhood).
+Polygon stadium(const Point& a, const Point& b, double r) {
+  std::vector<Point> pts;
+  for (const Point& e : {a, b}) {
+    const Polygon d = geometry::regular_polygon(Disk{e, r}, kObjectPolygonSides, true);
+    pts.insert(pts.end(), d.vertices.begin(), d.vertices.end());
+  }
+  return geometry::convex_hull(std::move(pts));
+}
+
+// Step 4: the stack B_M. `c` is the component of bound − ∪fixed holding x and x*; `root` the
+// index of F in `components`.
+std::vector<std::size_t> blocking_stack(const TopologyInput& in, const RegionSet& components,
+                                        std::size_t root, const Region& c, double slack,
+                                        std::string& note) {
+  const std::size_t n_free = components.size();
+  // The clusters: components of the union of the (slightly grown) objects, clipped to C.
+  RegionSet grown_objects;
+  grown_objects.reserve(in.movable.size());
+  for (const Polygon& p : in.movable) grown_objects.push_back(Region{grown(p, slack), {}});
+  const RegionSet clusters = geometry::intersect(grown_objects, RegionSet{c});
+
+  std::vector<Region> vertices(components.begin(), components.end());
+  vertices.insert(vertices.end(), clusters.begin(), clusters.end());
+  std::vector<Box> boxes;
+  boxes.reserve(vertices.size());
+  for (const Region& r : vertices) boxes.push_back(box_of(r.outer));
+
+  // Objects of each cluster, farthest from x first (pushed in this order, nearest on top).
+  std::vector<std::vector<std::size_t>> members(clusters.size());
+  for (std::size_t j = 0; j < clusters.size(); ++j) {
+    std::vector<std::pair<double, std::size_t>> order;
+    for (std::size_t k = 0; k < in.movable.size(); ++k) {
+      const Region object{in.movable[k], {}};
+      if (touch(object, box_of(in.movable[k]), vertices[n_free + j], boxes[n_free + j])) {
+        order.emplace_back(geometry::distance(in.movable[k], in.x), k);
+      }
+    }
+    std::sort(order.begin(), order.end(), [](const auto& a, const auto& b) {
+      return a.first != b.first ? a.first > b.first : a.second > b.second;
+    });
+    for (const auto& [dist, k] : order) members[j].push_back(k);
+  }
+
+  // The vertex holding x*: a freespace component, else a cluster (x* inside an object).
+  // Rounding can leave x* a hair outside every vertex; then the nearest one.
+  std::size_t goal = vertices.size();
+  for (std::size_t v = 0; v < vertices.size() && goal == vertices.size(); ++v) {
+    if (boxes[v].exteriorDistance(in.target) == 0 && geometry::contains(vertices[v], in.target)) {
+      goal = v;
+    }
+  }
+  if (goal == vertices.size()) {
+    double best = std::numeric_limits<double>::infinity();
+    for (std::size_t v = 0; v < vertices.size(); ++v) {
+      const double d = geometry::distance(vertices[v].outer, in.target);
+      if (d < best) {
+        best = d;
+        goal = v;
+      }
+    }
+  }
+
+  // Edges. Freespace component – cluster: a vertex or an edge midpoint of the component's
+  // boundary lies in the (grown) cluster; a boundary stretch shared with an object always
+  // has one, at a rounding distance from the object, well inside the grown cluster. Cluster –
+  // cluster: pieces of one union touch only at shared (bit-identical) vertices. Two freespace
+  // components never share more than a point.
+  std::vector<std::vector<std::size_t>> adjacent(vertices.size());
+  auto link = [&adjacent](std::size_t u, std::size_t v) {
+    if (std::find(adjacent[u].begin(), adjacent[u].end(), v) == adjacent[u].end()) {
+      adjacent[u].push_back(v);
+      adjacent[v].push_back(u);
+    }
+  };
+  for (std::size_t i = 0; i < n_free; ++i) {
+    auto probe = [&](const Point& q) {
+      for (std::size_t v = n_free; v < vertices.size(); ++v) {
+        if (boxes[v].exteriorDistance(q) == 0 && geometry::contains(vertices[v], q)) link(i, v);
+      }
+    };
+    auto probe_loop = [&](const Polygon& loop) {
+      for (std::size_t k = 0, n = loop.size(); k < n; ++k) {
+        probe(loop.vertices[k]);
+        probe((loop.vertices[k] + loop.vertices[(k + 1) % n]) / 2);
+      }
+    };
+    probe_loop(vertices[i].outer);
+    for (const Polygon& h : vertices[i].holes) probe_loop(h);
+  }
+  for (std::size_t u = n_free; u < vertices.size(); ++u) {
+    for (std::size_t v = u + 1; v < vertices.size(); ++v) {
+      if (!boxes[u].intersects(boxes[v])) continue;
+      const auto& ring = vertices[u].outer.vertices;
+      if (std::any_of(ring.begin(), ring.end(),
+                      [&](const Point& q) { return geometry::contains(vertices[v], q); })) {
+        link(u, v);
+      }
+    }
+  }
+
+  // Breadth-first search from F.
+  const std::size_t none = vertices.size();
+  std::vector<std::size_t> parent(vertices.size(), none);
+  std::vector<bool> seen(vertices.size(), false);
+  std::deque<std::size_t> queue{root};
+  seen[root] = true;
+  while (!queue.empty() && !seen[goal]) {
+    const std::size_t u = queue.front();
+    queue.pop_front();
+    for (std::size_t v : adjacent[u]) {
+      if (!seen[v]) {
+        seen[v] = true;
+        parent[v] = u;
+        queue.push_back(v);
+      }
+    }
+  }
+
+  std::vector<std::size_t> pushed;
+  if (goal != root && seen[goal]) {
+    for (std::size_t v = goal; v != root; v = parent[v]) {
+      if (v >= n_free) {
+        const auto& m = members[v - n_free];
+        pushed.insert(pushed.end(), m.begin(), m.end());
+      }
+    }
+  } else {
+    // Exact arithmetic says x* is in x's component of bound − ∪fixed, but the rounded
+    // components did not link up: every object in that component is a candidate.
+    note = " (adjacency inconclusive after rounding: every object in the component listed)";
+    std::vector<std::pair<double, std::size_t>> order;
+    for (const auto& m : members) {
+      for (std::size_t k : m) order.emplace_back(geometry::distance(in.movable[k], in.x), k);
+    }
+    std::sort(order.begin(), order.end(), [](const auto& a, const auto& b) {
+      return a.first != b.first ? a.first > b.first : a.second > b.second;
+    });
+    for (const auto& [dist, k] : order) pushed.push_back(k);
+  }
+  // An object met twice (it reaches into two clusters) keeps its position nearest the top.
+  std::vector<std::size_t> stack;
+  std::vector<bool> taken(in.movable.size(), false);
+  for (auto it = pushed.rbegin(); it != pushed.rend(); ++it) {
+    if (!taken[*it]) {
+      taken[*it] = true;
+      stack.push_back(*it);
+    }
+  }
+  std::reverse(stack.begin(), stack.end());
+  return stack;
+}
+
+}  // namespace
+
+const char* to_string(Verdict v) {
+  switch (v) {
+    case Verdict::kReachable:
+      return "reachable";
+    case Verdict::kBlockedByObjects:
+      return "blocked by movable objects";
+    case Verdict::kBlockedByFixed:
+      return "blocked by fixed obstacles";
+  }
+  return "unknown verdict";
+}
+
+TopologyResult check_topology(const TopologyInput& raw) {
+  check_point(raw.x, "robot position x");
+  check_point(raw.target, "target x*");
+  if (raw.bound.empty()) throw Error("topology: the bound (initial freespace) is empty");
+  if (!raw.movable_ids.empty() && raw.movable_ids.size() != raw.movable.size()) {
+    throw Error("topology: " + std::to_string(raw.movable_ids.size()) + " movable ids for " +
+                std::to_string(raw.movable.size()) + " movable objects");
+  }
+  TopologyInput in;
+  in.x = raw.x;
+  in.target = raw.target;
+  for (std::size_t i = 0; i < raw.bound.size(); ++i) {
+    in.bound.push_back(
+        validated_region(raw.bound[i], "topology: bound region " + std::to_string(i)));
+  }
+  RegionSet fixed;
+  for (std::size_t i = 0; i < raw.fixed.size(); ++i) {
+    for (std::size_t k = 0; k < raw.fixed[i].size(); ++k) {
+      fixed.push_back(validated_region(
+          raw.fixed[i][k],
+          "topology: fixed obstacle " + std::to_string(i) + " region " + std::to_string(k)));
+    }
+  }
+  for (std::size_t i = 0; i < raw.movable.size(); ++i) {
+    const std::string what = "topology: movable object " + std::to_string(i);
+    in.movable.push_back(geometry::validated(raw.movable[i], what.c_str()));
+  }
+  auto id = [&raw](std::size_t k) { return raw.movable_ids.empty() ? k : raw.movable_ids[k]; };
+
+  // Step 1: F_list, F and F_e (overlapping obstacles are united inside subtract).
+  RegionSet obstacles = fixed;
+  for (const Polygon& p : in.movable) obstacles.push_back(Region{p, {}});
+  TopologyResult out;
+  out.components = geometry::subtract(in.bound, obstacles);
+  std::size_t root = out.components.size();
+  for (std::size_t i = 0; i < out.components.size() && root == out.components.size(); ++i) {
+    if (geometry::contains(out.components[i], in.x)) root = i;
+  }
+  if (root == out.components.size()) {
+    throw Error("topology: x = " + format(in.x) +
+                " is not in the freespace (inside an obstacle's dilation or outside the bound)");
+  }
+  out.freespace = out.components[root];
+  out.enclosing = geometry::convex_hull(out.freespace.outer.vertices);
+
+  // Step 2.
+  if (geometry::contains(out.freespace, in.target)) {
+    out.verdict = Verdict::kReachable;
+    out.reason = "x* = " + format(in.target) + " lies in the robot's freespace component";
+    return out;
+  }
+
+  // Step 3: components of bound − ∪fixed (the movable objects treated as free).
+  const RegionSet without_objects = geometry::subtract(in.bound, fixed);
+  const Region* c = nullptr;
+  for (const Region& r : without_objects) {
+    if (geometry::contains(r, in.x)) {
+      c = &r;
+      break;
+    }
+  }
+  for (const Region& r : without_objects) {  // x a hair outside after rounding
+    if (c == nullptr && geometry::intersects(RegionSet{r}, RegionSet{out.freespace})) c = &r;
+  }
+  REARM_DEMAND(c != nullptr, "topology: F lies in no component of bound minus fixed obstacles");
+  if (!geometry::contains(*c, in.target)) {
+    out.verdict = Verdict::kBlockedByFixed;
+    const bool elsewhere = geometry::contains(without_objects, in.target);
+    out.reason = "x* = " + format(in.target) +
+                 (elsewhere ? " is separated from x = " + format(in.x) +
+                                  " by fixed obstacles or the workspace boundary"
+                            : " lies inside a fixed obstacle's dilation or outside the bound");
+    return out;
+  }
+
+  // Step 4.
+  Box extent;
+  for (const Region& r : in.bound) extent.extend(box_of(r.outer));
+  const double slack = kAdjacencySlack * extent.diagonal().norm();
+  std::string note;
+  std::vector<std::size_t> stack = blocking_stack(in, out.components, root, *c, slack, note);
+  if (stack.empty()) {
+    // Exactly, x* ∈ C \ F needs an object in C; none means x* is a rounding hair outside F.
+    out.verdict = Verdict::kReachable;
+    out.reason = "x* = " + format(in.target) +
+                 " lies on the boundary of the robot's freespace component (within rounding)";
+    return out;
+  }
+  out.verdict = Verdict::kBlockedByObjects;
+  for (std::size_t k : stack) out.blocking.push_back(id(k));
+  std::ostringstream s;
+  s << "x* = " << format(in.target) << " is cut off from x = " << format(in.x) << " by "
+    << stack.size() << " movable object" << (stack.size() == 1 ? "" : "s")
+    << " (move first to last:";
+  for (auto it = out.blocking.rbegin(); it != out.blocking.rend(); ++it) s << " " << *it;
+  s << ")" << note;
+  out.reason = s.str();
+  return out;
+}
+
+TopologyInput make_input(const geometry::Polygon& workspace,
+                         const std::vector<geometry::Polygon>& familiar,
+                         const std::vector<geometry::Disk>& objects, double radius,
+                         geometry::Point x, geometry::Point target,
+                         std::optional<std::size_t> carried) {
+  if (!std::isfinite(radius) || !(radius > 0)) {
+    throw Error("topology: dilation radius must be finite and > 0, got " + std::to_string(radius));
+  }
+  check_point(x, "robot position x");
+  check_point(target, "target x*");
+  if (carried && *carried >= objects.size()) {
+    throw Error("topology: carried object " + std::to_string(*carried) + " of " +
+                std::to_string(objects.size()));
+  }
+  const double r = radius + kContactSlack;
+  const Polygon w = geometry::validated(workspace, "topology: workspace");
+
+  TopologyInput in;
+  in.x = x;
+  in.target = target;
+  std::vector<Polygon> walls;
+  for (std::size_t i = 0, n = w.size(); i < n; ++i) {
+    walls.push_back(stadium(w.vertices[i], w.vertices[(i + 1) % n], r));
+  }
+  in.bound = geometry::subtract(geometry::to_set(w), geometry::unite_all(walls));
+  for (std::size_t i = 0; i < familiar.size(); ++i) {
+    const std::string what = "topology: familiar obstacle " + std::to_string(i);
+    in.fixed.push_back(geometry::dilate_miter(geometry::validated(familiar[i], what.c_str()), r));
+  }
+  for (std::size_t i = 0; i < objects.size(); ++i) {
+    const Disk& d = objects[i];
+    const std::string what = "topology: movable object " + std::to_string(i);
+    check_point(d.center, what + " centre");
+    if (!std::isfinite(d.radius) || !(d.radius > 0)) {
+      throw Error(what + ": radius must be finite and > 0, got " + std::to_string(d.radius));
+    }
+    if (carried && *carried == i) continue;
+    in.movable.push_back(
+        geometry::regular_polygon(Disk{d.center, d.radius + r}, kObjectPolygonSides, true));
+    in.movable_ids.push_back(i);
+  }
+  return in;
+}
+
+}  // namespace rearm::topology

@@ -1,0 +1,125 @@
+// The topology check of the paper's Section V-A and Appendix III (docs/executive.md,
+// "Topology check"): does a movable object or a fixed obstacle disconnect the robot (or the
+// robot–object pair) from its target, and which objects must be moved, in which order?
+//
+// The robot alone and the robot–object pair are the same call with different dilation radii
+// (r, or r + ρ_i): the caller dilates, or uses make_input(). Every topological decision
+// (components, containment, touching) is made on exact polygon Booleans and predicates
+// (geometry/boolean.h, geometry/polygon.h); the inputs are doubles.
+//
+// Algorithm (Appendix III, with the choices the paper leaves open):
+//  1. F_list = bound − ∪(fixed ∪ movable), exactly. F = the component containing x (an error
+//     when there is none); F_e = Conv(F) = the convex hull of F's outer boundary.
+//  2. x* ∈ F → kReachable. The paper writes "x* ∈ F_e"; taken literally a target in another
+//     pocket of Conv(F) (behind an obstacle bordering the hull) would pass although the
+//     robot cannot reach it, so F itself is tested.
+//  3. x and x* in different components of bound − ∪fixed → kBlockedByFixed (the action is
+//     infeasible). The paper tests components of (∪ F_list) ∪ (∪ movable). The two agree
+//     whenever no object physically overlaps a fixed obstacle or the workspace boundary (a
+//     disk dilated by r cannot reach past an obstacle dilated by r); with such an overlap (a
+//     localization error) a dilated object would bridge a wall that moving it cannot open,
+//     so the objects are treated as free space inside bound − ∪fixed only.
+//  4. Otherwise kBlockedByObjects. The object clusters are the connected components of the
+//     union of the movable objects (touching or overlapping closures are one cluster),
+//     clipped to the component C of bound − ∪fixed that holds x and x* (so a cluster cut by
+//     a fixed obstacle becomes two vertices). The graph: vertices are the freespace
+//     components of F_list and the clusters, edges join closures that touch (see
+//     kAdjacencySlack). Breadth-first search from F to the vertex holding x* (a freespace
+//     component, or a cluster when x* lies inside an object); walking back from that vertex
+//     to F, the objects of every cluster met are pushed onto B_M, so the cluster nearest the
+//     robot ends on top. Inside one cluster the objects are pushed farthest from x first
+//     (distance from x to the object's polygon; on a tie the lower index on top), so the
+//     nearest is on top. An object met twice keeps its position nearest the top. The paper
+//     assumes a tree (each cluster touches at most two freespace components); breadth-first
+//     search handles any graph and gives a path through the fewest vertices.
+//     Rounding guards (the Booleans are exact, their results rounded to doubles): when the
+//     rounded pieces do not link F to x*, B_M lists every object in C (farthest first, the
+//     reason says so); when C holds no object at all, x* is a rounding hair outside F and the
+//     verdict is kReachable.
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "geometry/convex.h"
+#include "geometry/polygon.h"
+
+namespace rearm::topology {
+
+// Sides of the circumscribed regular polygon standing for a dilated disk object in
+// make_input() (the reactive layer uses the same count).
+inline constexpr int kObjectPolygonSides = 32;
+
+// make_input() dilates by radius + kContactSlack (m): dilations that touch in exact
+// arithmetic can be 1e-15 m apart after rounding, which would leave a zero-width corridor of
+// freespace between them; the slack closes it (and keeps the robot 1e-9 m further away).
+inline constexpr double kContactSlack = 1e-9;
+
+// Adjacency of a freespace component and an object cluster is decided against the cluster
+// grown by kAdjacencySlack × (the bound's bounding-box diagonal): both come out of separate
+// exact Booleans rounded to doubles, so a shared boundary can be off by ~1e-16 relative.
+// They touch when a vertex or an edge midpoint of the component's boundary lies in the grown
+// cluster (exact point location): every boundary stretch or vertex the component shares with
+// an object gives one. Components closer than the slack count as touching; a contact at a
+// single point where an object's corner meets the inside of a component's edge is missed.
+inline constexpr double kAdjacencySlack = 1e-9;
+
+struct TopologyInput {
+  // The initially assumed freespace: the workspace eroded by the dilation radius (r, or
+  // r + ρ_i for the robot–object pair). May be non-convex and have holes.
+  geometry::RegionSet bound;
+  // Dilated familiar obstacles localized so far (each a region set: a dilated U closing on
+  // itself keeps its hole).
+  std::vector<geometry::RegionSet> fixed;
+  // Dilated movable objects, simple polygons (make_input passes circumscribed regular
+  // polygons of radius ρ_k + r).
+  std::vector<geometry::Polygon> movable;
+  // The caller's index of each movable polygon, reported in TopologyResult::blocking. Empty:
+  // the polygon's position in `movable`. Otherwise one per polygon.
+  std::vector<std::size_t> movable_ids;
+  geometry::Point x = geometry::Point::Zero();       // robot (or pair) centre
+  geometry::Point target = geometry::Point::Zero();  // x*
+};
+
+enum class Verdict {
+  kReachable,         // x* ∈ F
+  kBlockedByObjects,  // x* reachable once the objects of `blocking` are moved (Fix mode)
+  kBlockedByFixed,    // fixed obstacles (or the workspace) separate x* from x: infeasible
+};
+const char* to_string(Verdict v);
+
+struct TopologyResult {
+  Verdict verdict = Verdict::kReachable;
+  geometry::Region freespace;      // F: the component of F_list containing x
+  geometry::Polygon enclosing;     // F_e = Conv(F), for the diffeomorphism
+  geometry::RegionSet components;  // F_list: every freespace component (F among them)
+  // The stack B_M of blocking objects (caller's ids): back() is the top, the object to move
+  // first. Empty unless verdict == kBlockedByObjects.
+  std::vector<std::size_t> blocking;
+  std::string reason;  // why: the target's component, the blocking objects, the separation
+};
+
+// Appendix III. Throws rearm::Error for bad input: a non-finite x or x*, an invalid polygon
+// (geometry::validated), an empty bound, movable_ids of the wrong size, or x not in the
+// freespace (inside an obstacle's dilation or outside the bound).
+TopologyResult check_topology(const TopologyInput& in);
+
+// Builds the input for a robot of radius `radius` (or a robot–object pair, radius r + ρ_i):
+//  - bound: the workspace (a simple polygon) eroded by radius: W minus the stadiums
+//    (circumscribed-polygon hulls) of its edges, conservative;
+//  - fixed: each familiar polygon dilated with geometry::dilate_miter;
+//  - movable: each object as a circumscribed kObjectPolygonSides-gon of radius ρ + radius,
+//    except `carried` (the object in the gripper), which is left out; movable_ids keep the
+//    caller's indices.
+// All dilations use radius + kContactSlack. Throws rearm::Error for a non-finite or
+// non-positive radius or object radius, an invalid polygon, a non-finite point, or a carried
+// index out of range.
+TopologyInput make_input(const geometry::Polygon& workspace,
+                         const std::vector<geometry::Polygon>& familiar,
+                         const std::vector<geometry::Disk>& objects, double radius,
+                         geometry::Point x, geometry::Point target,
+                         std::optional<std::size_t> carried = std::nullopt);
+
+}  // namespace rearm::topology
