@@ -12,21 +12,8 @@
 # Environment: MACHINE (default debian12-2core), BUILD (default build). Extra arguments go to
 # topology_bench, e.g. --benchmark_filter=FarCorner. Runs in about a minute on 2 cores.
 set -euo pipefail
-cd "$(dirname "$0")/.."
-bash scripts/setup.sh
-MACHINE=${MACHINE:-debian12-2core}
-BUILD=${BUILD:-build}
-OUT="results/$MACHINE"
-
-cmake -S . -B "$BUILD" -DCMAKE_BUILD_TYPE=Release -DREARM_SANITIZE=OFF -DREARM_BUILD_BENCH=ON
-cmake --build "$BUILD" --target topology_bench -j"$(nproc)"
-mkdir -p "$OUT"
-# The revision measured: taken before this script writes its own results.
-REV=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
-if [ -n "$(git status --porcelain -- . ':!results' 2>/dev/null)" ]; then
-  REV="$REV + uncommitted changes"
-fi
-LOAD=$(cut -d" " -f1-3 /proc/loadavg)  # 1, 5, 15 min, as the benchmark starts
+source "$(dirname "$0")/lib/bench_common.sh"
+bench_prepare topology_bench
 "$BUILD/bin/topology_bench" --benchmark_out="$OUT/topology.json" --benchmark_out_format=json "$@"
 LOAD_END=$(cut -d" " -f1-3 /proc/loadavg)
 CPU=$(grep -m1 '^model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ *//')
