@@ -106,7 +106,22 @@ std::optional<std::pair<Point, Point>> find_lid(const Polygon& pocket, const Pol
 
 }  // namespace
 
+const geometry::RegionSet& DilationCache::miter(const Polygon& p, double d) {
+  for (const Entry& e : entries_) {
+    if (e.distance == d && e.polygon.vertices == p.vertices) return e.dilation;
+  }
+  if (entries_.size() >= kDilationCacheEntries) entries_.clear();
+  entries_.push_back(Entry{p, d, geometry::dilate_miter(p, d)});
+  return entries_.back().dilation;
+}
+
 MappedSpace build_mapped_space(const SemanticInput& in, double radius, const Point& robot) {
+  DilationCache none;
+  return build_mapped_space(in, radius, robot, none);
+}
+
+MappedSpace build_mapped_space(const SemanticInput& in, double radius, const Point& robot,
+                               DilationCache& cache) {
   if (!std::isfinite(radius) || !(radius > 0)) {
     throw Error("mapped space: dilation radius must be finite and > 0, got " +
                 std::to_string(radius));
@@ -146,7 +161,7 @@ MappedSpace build_mapped_space(const SemanticInput& in, double radius, const Poi
   for (std::size_t i = 0; i < in.familiar.size(); ++i) {
     const std::string what = "familiar obstacle " + std::to_string(i);
     const Polygon p = geometry::validated(in.familiar[i], what.c_str());
-    add_dilation(geometry::dilate_miter(p, radius + kContactSlack));
+    add_dilation(cache.miter(p, radius + kContactSlack));
     sources.push_back({Kind::kFamiliar, i, p.vertices.front()});
   }
   for (std::size_t i = 0; i < in.unknown.size(); ++i) {

@@ -43,7 +43,7 @@ ReactiveController::ReactiveController(const DiffeoParams& diffeo, const NavPara
 void ReactiveController::rebuild(const SemanticInput& map, double radius, const Point& center,
                                  const Point& goal) {
   if (!goal.allFinite()) throw Error("reactive controller: goal is not finite");
-  MappedSpace mapped = build_mapped_space(map, radius, center);
+  MappedSpace mapped = build_mapped_space(map, radius, center, dilations_);
   Point target = goal;
   if (!in_freespace(mapped, goal)) {
     if (auto snapped = snap_goal(mapped, goal)) target = *snapped;

@@ -57,6 +57,7 @@ class ReactiveController {
   DiffeoParams diffeo_params_;
   NavParams nav_;
   MappedSpace mapped_;
+  DilationCache dilations_;  // familiar obstacles' dilations, kept across rebuilds
   std::unique_ptr<Diffeomorphism> diffeo_;
   Point goal_ = Point::Zero();
   Point model_goal_ = Point::Zero();
