@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include "core/error.h"
+
 namespace rearm::cli {
 
 struct Command {
@@ -22,5 +24,14 @@ int run_diffeo(const std::vector<std::string>& args);
 inline constexpr int kExitOk = 0;
 inline constexpr int kExitFailure = 1;
 inline constexpr int kExitUsage = 2;
+
+// The value of the option args[i], advancing i past it; throws rearm::Error (a usage error)
+// when the value is missing or is the next option ("--...").
+inline const std::string& option_value(const std::vector<std::string>& args, std::size_t& i) {
+  if (i + 1 >= args.size() || args[i + 1].rfind("--", 0) == 0) {
+    throw Error(args[i] + " expects a value");
+  }
+  return args[++i];
+}
 
 }  // namespace rearm::cli

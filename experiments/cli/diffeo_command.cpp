@@ -164,32 +164,32 @@ struct PathRun {
 
 // One closed-loop run with the navigation law of docs/reactive.md §4, integrated by the
 // exact zero-order-hold steps of reactive/kinematics.h.
-PathRun integrate(const reactive::MappedSpace& m, const reactive::Diffeomorphism& h,
-                  const SceneFile& scene, const Point& start, double heading, Robot robot) {
+PathRun integrate(const SceneFile& scene, const Point& start, double heading, Robot robot) {
   PathRun run;
   run.start = start;
   run.heading = heading;
   const Point& goal = scene.goal;
   reactive::NavParams np;
   np.sensing_range = scene.sensing_range;
-  // The reactive controller (its own mapped space and diffeomorphism of the same scene, seen
-  // from this start), so the path gets its discrete-time safety filter too.
+  // The reactive controller (the mapped space and diffeomorphism of the scene, seen from this
+  // start), so the path gets its discrete-time safety filter too.
   reactive::ReactiveController controller(scene.params, np);
   controller.rebuild(scene.semantic, scene.radius, start, goal);
+  const reactive::MappedSpace& m = controller.mapped();
+  const reactive::Diffeomorphism& h = controller.diffeo();
   reactive::Pose pose{start, heading};
   const double dt = reactive::kDefaultStep;
   const int steps = static_cast<int>(kMaxTime / dt);
-  auto record = [&](const reactive::DiffeoEval& e) {
+  auto record = [&]() {
     run.mapped.push_back(pose.x);
     run.headings.push_back(pose.psi);
-    run.model.push_back(e.h);
+    run.model.push_back(h.map(pose.x));
   };
   run.status = "timeout";
   for (int k = 0; k <= steps; ++k) {
-    const reactive::DiffeoEval e = h.evaluate(pose.x);
-    if (k % kRecordEvery == 0) record(e);
+    if (k % kRecordEvery == 0) record();
     if ((pose.x - goal).norm() <= kGoalTolerance) {
-      if (k % kRecordEvery != 0) record(e);
+      if (k % kRecordEvery != 0) record();
       run.status = "reached";
       break;
     }
@@ -201,13 +201,13 @@ PathRun integrate(const reactive::MappedSpace& m, const reactive::Diffeomorphism
         pose.x = reactive::holonomic_step(pose.x, controller.holonomic(pose.x, dt), dt);
       }
     } catch (const Error& err) {
-      record(e);
+      if (k % kRecordEvery != 0) record();
       run.status = std::string("error: ") + err.what();
       break;
     }
     run.time = (k + 1) * dt;
     if (!reactive::in_freespace(m, pose.x)) {
-      record(h.evaluate(pose.x));
+      record();
       run.status = "collision";
       break;
     }
@@ -372,12 +372,7 @@ int run_diffeo(const std::vector<std::string>& args) {
   };
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
-    auto value = [&]() -> const std::string& {
-      if (i + 1 >= args.size() || args[i + 1].rfind("--", 0) == 0) {
-        throw Error(a + " expects a value");
-      }
-      return args[++i];
-    };
+    auto value = [&]() -> const std::string& { return option_value(args, i); };
     if (a == "--help" || a == "-h") {
       std::fputs(kUsage, stdout);
       return kExitOk;
@@ -427,12 +422,12 @@ int run_diffeo(const std::vector<std::string>& args) {
 
   // Closed-loop runs: the scene's start, then the random ones.
   std::vector<PathRun> runs;
-  runs.push_back(integrate(m, h, scene, scene.start, scene.heading, robot));
+  runs.push_back(integrate(scene, scene.start, scene.heading, robot));
   Rng rng(seed);
   for (int i = 0; i < starts; ++i) {
     const Point s = random_start(rng, m);
     const double psi = rng.uniform(-std::numbers::pi, std::numbers::pi);
-    runs.push_back(integrate(m, h, scene, s, psi, robot));
+    runs.push_back(integrate(scene, s, psi, robot));
   }
 
   Json j;

@@ -61,12 +61,7 @@ int run_plan(const std::vector<std::string>& args) {
   std::size_t max_steps = kDefaultMaxSteps;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
-    auto value = [&]() -> const std::string& {
-      if (i + 1 >= args.size() || args[i + 1].rfind("--", 0) == 0) {
-        throw Error(a + " expects a value");
-      }
-      return args[++i];
-    };
+    auto value = [&]() -> const std::string& { return option_value(args, i); };
     if (a == "--help" || a == "-h") {
       std::fputs(kUsage, stdout);
       return kExitOk;

@@ -104,4 +104,21 @@ RegionSet dilate_miter(const Polygon& p, double r) {
   return unite_all(parts);
 }
 
+Polygon disk_polygon(const Disk& d) { return regular_polygon(d, kDiskPolygonSides, true); }
+
+RegionSet erode(const Polygon& workspace, double r) {
+  if (!std::isfinite(r) || !(r > 0)) {
+    throw Error("erode: distance must be finite and > 0, got " + std::to_string(r));
+  }
+  const Polygon w = validated(workspace, "workspace");
+  std::vector<Polygon> walls;
+  for (std::size_t i = 0, n = w.size(); i < n; ++i) {
+    std::vector<Point> pts = disk_polygon(Disk{w.vertices[i], r}).vertices;
+    const Polygon b = disk_polygon(Disk{w.vertices[(i + 1) % n], r});
+    pts.insert(pts.end(), b.vertices.begin(), b.vertices.end());
+    walls.push_back(convex_hull(std::move(pts)));
+  }
+  return subtract(to_set(w), unite_all(walls));
+}
+
 }  // namespace rearm::geometry

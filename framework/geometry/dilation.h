@@ -10,6 +10,7 @@
 //    sqrt(kMiterLimit² + 1)·r at bevelled corners.
 #pragma once
 
+#include "geometry/convex.h"
 #include "geometry/polygon.h"
 
 namespace rearm::geometry {
@@ -25,5 +26,24 @@ inline constexpr double kMiterLimit = 2.0;
 // p is validated (polygon.h); r must be finite and > 0. Both throw rearm::Error otherwise.
 RegionSet dilate_round(const Polygon& p, double r);
 RegionSet dilate_miter(const Polygon& p, double r);
+
+// Sides of the circumscribed regular polygon that stands for a disk (a dilated movable object,
+// a corner of an eroded workspace) in exact Booleans: a superset of the disk whose boundary is
+// within radius·(1/cos(π/32) − 1) ≈ 0.5 % of the circle.
+inline constexpr int kDiskPolygonSides = 32;
+
+// Obstacles that feed the freespace Booleans (reactive mapped space, topology check) are
+// dilated by r + kContactSlack (m): dilations that touch in exact arithmetic can be 1e-15 m
+// apart after rounding, which would leave a zero-width corridor of freespace between them; the
+// slack consolidates them (and keeps the robot 1e-9 m further away).
+inline constexpr double kContactSlack = 1e-9;
+
+// A disk as its circumscribed kDiskPolygonSides-gon (radius finite and > 0, else rearm::Error).
+Polygon disk_polygon(const Disk& d);
+
+// The workspace eroded by r: W minus the union of thick segments (hulls of two circumscribed
+// disk polygons) around its edges; a subset of the exact erosion (conservative). The
+// workspace is validated (polygon.h); r must be finite and > 0. Both throw rearm::Error.
+RegionSet erode(const Polygon& workspace, double r);
 
 }  // namespace rearm::geometry

@@ -150,7 +150,11 @@ struct Node {
 // this), so a centre beyond the edge keeps the augmented polygon convex (§3.3).
 constexpr double kMinCornerSine = 1e-9;
 
-double turn_sine(const Point& a, const Point& b, const Point& c);
+// Sine of the turn a → b → c (positive to the left).
+double turn_sine(const Point& a, const Point& b, const Point& c) {
+  const Vector2d u = b - a, w = c - b;
+  return (u.x() * w.y() - u.y() * w.x()) / (u.norm() * w.norm());
+}
 
 bool corners_convex(const Polygon& piece, int e) {
   const std::size_t s = piece.size();
@@ -202,11 +206,6 @@ std::vector<Point> all_vertices(const std::vector<Polygon>& pieces) {
   });
   out.erase(std::unique(out.begin(), out.end()), out.end());
   return out;
-}
-
-double turn_sine(const Point& a, const Point& b, const Point& c) {
-  const Vector2d u = b - a, w = c - b;
-  return (u.x() * w.y() - u.y() * w.x()) / (u.norm() * w.norm());
 }
 
 // A piece whose side runs straight on past the end v of an edge it shares with a neighbour
@@ -382,25 +381,25 @@ Diffeomorphism Diffeomorphism::build(const MappedSpace& m, const DiffeoParams& p
     pieces[ci] = candidates[ci].front().pieces;  // what other components' collars avoid
   }
 
-  // Convex obstacles a collar must avoid: pieces (tagged by component and piece), unknown
-  // fragments and movable objects (circumscribed polygons, supersets of the disks).
+  // Convex obstacles a collar must avoid: pieces of the other components (tagged by their
+  // component), unknown fragments and movable objects (circumscribed polygons, supersets of
+  // the disks).
   struct Blocker {
     int component;  // -1: not familiar
-    int piece;
     const Polygon* poly;
   };
   std::vector<Polygon> extra;
   for (const Disk& disk : m.movable) {
-    extra.push_back(geometry::regular_polygon(disk, kDiskPolygonSides, true));
+    extra.push_back(geometry::disk_polygon(disk));
   }
   std::vector<Blocker> blockers;
   for (std::size_t ci = 0; ci < pieces.size(); ++ci) {
     for (std::size_t k = 0; k < pieces[ci].size(); ++k) {
-      blockers.push_back({static_cast<int>(ci), static_cast<int>(k), &pieces[ci][k]});
+      blockers.push_back({static_cast<int>(ci), &pieces[ci][k]});
     }
   }
-  for (const Polygon& u : m.unknown) blockers.push_back({-1, -1, &u});
-  for (const Polygon& e : extra) blockers.push_back({-1, -1, &e});
+  for (const Polygon& u : m.unknown) blockers.push_back({-1, &u});
+  for (const Polygon& e : extra) blockers.push_back({-1, &e});
 
   std::vector<Disk> root_disks;
   // The purges of component ci over one candidate tree (§3.3–3.7); throws rearm::Error when a

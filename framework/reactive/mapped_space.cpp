@@ -24,10 +24,7 @@ constexpr double kLidTolerance = 1e-9;
 // rounding slivers of the exact Booleans, not obstacles.
 constexpr double kRelativeSliverArea = 1e-12;
 
-// Obstacles are dilated by r + kContactSlack (m): dilations that touch in exact arithmetic
-// can be 1e-15 m apart after rounding, which would leave a zero-width corridor of freespace
-// between them; the slack consolidates them (and keeps the robot 1e-9 m further away).
-constexpr double kContactSlack = 1e-9;
+using geometry::kContactSlack;  // obstacles are dilated by r + kContactSlack (dilation.h)
 // Vertices closer than this (m) to the segment joining their neighbours are dropped from the
 // purged components: such nearly flat corners (and the sliver pieces they make) admit no purge
 // centre. The obstacle moves by at most this distance.
@@ -55,26 +52,12 @@ void check_point(const Point& p, const std::string& what) {
   if (!p.allFinite()) throw Error(what + " is not finite");
 }
 
-// A thick segment: the hull of two circumscribed disk polygons (contains the r-neighbourhood).
-Polygon stadium(const Point& a, const Point& b, double r) {
-  std::vector<Point> pts;
-  for (const Point& e : {a, b}) {
-    const Polygon d = geometry::regular_polygon(Disk{e, r}, kDiskPolygonSides, true);
-    pts.insert(pts.end(), d.vertices.begin(), d.vertices.end());
-  }
-  return geometry::convex_hull(std::move(pts));
-}
-
 double segment_distance(const Point& a, const Point& b, const Point& x) {
   return (geometry::nearest_on_segment(a, b, x) - x).norm();
 }
 
 double boundary_distance(const Polygon& p, const Point& x) {
-  double best = std::numeric_limits<double>::infinity();
-  for (std::size_t i = 0, n = p.size(); i < n; ++i) {
-    best = std::min(best, segment_distance(p.vertices[i], p.vertices[(i + 1) % n], x));
-  }
-  return best;
+  return geometry::nearest_on_boundary(p, x).distance;
 }
 
 // The lid of a pocket: its longest edge lying on ∂F_e (both ends and the midpoint on it).
@@ -127,15 +110,8 @@ MappedSpace build_mapped_space(const SemanticInput& in, double radius, const Poi
                 std::to_string(radius));
   }
   check_point(robot, "mapped space: robot position");
-  const Polygon workspace = geometry::validated(in.workspace, "workspace");
-
-  // The workspace eroded by the radius: W minus thick copies of its edges (conservative).
-  std::vector<Polygon> walls;
-  for (std::size_t i = 0, n = workspace.size(); i < n; ++i) {
-    walls.push_back(stadium(workspace.vertices[i], workspace.vertices[(i + 1) % n], radius));
-  }
-  const RegionSet eroded =
-      geometry::subtract(geometry::to_set(workspace), geometry::unite_all(walls));
+  // The workspace eroded by the radius (conservative).
+  const RegionSet eroded = geometry::erode(in.workspace, radius);
 
   // Dilated obstacles (§2): familiar with miter joins, unknown with round joins, movable
   // objects as circumscribed polygons. A representative point of each lies strictly inside
@@ -180,8 +156,8 @@ MappedSpace build_mapped_space(const SemanticInput& in, double radius, const Poi
     if (!std::isfinite(d.radius) || !(d.radius > 0)) {
       throw Error(what + ": radius must be finite and > 0, got " + std::to_string(d.radius));
     }
-    add_dilation(geometry::to_set(geometry::regular_polygon(
-        Disk{d.center, d.radius + radius + kContactSlack}, kDiskPolygonSides, true)));
+    add_dilation(geometry::to_set(
+        geometry::disk_polygon(Disk{d.center, d.radius + radius + kContactSlack})));
     sources.push_back({Kind::kMovable, i, d.center});
   }
 

@@ -45,10 +45,6 @@ struct MappedSpace {
   std::vector<Disk> movable;                // dilated movable objects, kept as they are
 };
 
-// Number of sides of the circumscribed polygon that stands for a dilated disk in the exact
-// Boolean operations (a superset of the disk; its boundary is within r·(1/cos(π/n) − 1)).
-inline constexpr int kDiskPolygonSides = 32;
-
 // Builds the mapped space seen from `robot` (the robot's, or the robot–object pair's, centre).
 // Familiar polygons are dilated with miter joins, unknown fragments and the workspace with round
 // joins (the workspace is eroded). Documented fallback: a hole of F_k made of one unknown

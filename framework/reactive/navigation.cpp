@@ -123,6 +123,7 @@ Twist unicycle_command(const ModelSpace& m, const DiffeoEval& at_x, double psi, 
   const double across = to_a.dot(e_perp);
   const double t_w = along != 0 ? std::atan(across / along)
                                 : (across > 0 ? kHalfPi : (across < 0 ? -kHalfPi : 0.0));
+  s.t_w = t_w;
 
   const double dxi_dpsi = J.determinant() / e2;
   const double alpha1 = -e.y();  // −(Dh21 c + Dh22 s)

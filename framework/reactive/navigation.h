@@ -37,8 +37,9 @@ void validate(const NavParams& p);
 
 // Reusable buffers for the local freespace (no allocation once warm).
 struct NavScratch {
-  geometry::Polygon lf;
+  geometry::Polygon lf;  // output too: LF(y) of the last command
   geometry::Polygon work;
+  double t_w = 0;  // output: t_W of the last unicycle command
 };
 
 // Fully actuated law: ẋ = Dh⁻¹ · k (Π_LF(y)(y*) − y), y = at_x.h, with ‖ẋ‖ saturated to v_max.

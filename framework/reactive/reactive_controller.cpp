@@ -83,13 +83,9 @@ Twist ReactiveController::unicycle(const Pose& pose, double dt) {
   // v and ω are halved together until the predicted step keeps the model point in LF(y) (the
   // safety filter) and turns ξ by no more than twice the law's own turn k_ω|t_W| dt plus
   // kHeadingGuardSlack (an ordinary step turns ξ by at most ω_max dt = 0.01 rad).
-  const Point t0(std::cos(pose.psi), std::sin(pose.psi));
-  const Point e0 = e.J * t0;
-  const Point to_a = geometry::project_onto_convex(scratch_.lf, model_goal_) - e.h;
-  const double along = to_a.dot(e0), across = e0.x() * to_a.y() - e0.y() * to_a.x();
-  const double t_w = along != 0 ? std::abs(std::atan(across / along)) : std::numbers::pi / 2;
+  const Point e0 = e.J * Point(std::cos(pose.psi), std::sin(pose.psi));
   const double xi0 = std::atan2(e0.y(), e0.x());
-  const double allowed = 2 * nav_.k_omega * t_w * dt + kHeadingGuardSlack;
+  const double allowed = 2 * nav_.k_omega * std::abs(scratch_.t_w) * dt + kHeadingGuardSlack;
   for (int k = 0; k < kSafetyHalvings; ++k, u = Twist{u.v / 2, u.omega / 2}) {
     const Pose next = unicycle_step(pose, u, dt);
     const DiffeoEval en = diffeo_->evaluate(next.x);

@@ -65,16 +65,6 @@ Polygon grown(const Polygon& p, double d) {
   return geometry::dilate_round(p, d).front().outer;
 }
 
-// A thick segment: the hull of two circumscribed disk polygons (contains the r-neighbourhood).
-Polygon stadium(const Point& a, const Point& b, double r) {
-  std::vector<Point> pts;
-  for (const Point& e : {a, b}) {
-    const Polygon d = geometry::regular_polygon(Disk{e, r}, kObjectPolygonSides, true);
-    pts.insert(pts.end(), d.vertices.begin(), d.vertices.end());
-  }
-  return geometry::convex_hull(std::move(pts));
-}
-
 // Step 4: the stack B_M. `c` is the component of bound − ∪fixed holding x and x*; `root` the
 // index of F in `components`.
 std::vector<std::size_t> blocking_stack(const TopologyInput& in, const RegionSet& components,
@@ -346,17 +336,11 @@ TopologyInput make_input(const geometry::Polygon& workspace,
     throw Error("topology: carried object " + std::to_string(*carried) + " of " +
                 std::to_string(objects.size()));
   }
-  const double r = radius + kContactSlack;
-  const Polygon w = geometry::validated(workspace, "topology: workspace");
-
+  const double r = radius + geometry::kContactSlack;
   TopologyInput in;
   in.x = x;
   in.target = target;
-  std::vector<Polygon> walls;
-  for (std::size_t i = 0, n = w.size(); i < n; ++i) {
-    walls.push_back(stadium(w.vertices[i], w.vertices[(i + 1) % n], r));
-  }
-  in.bound = geometry::subtract(geometry::to_set(w), geometry::unite_all(walls));
+  in.bound = geometry::erode(workspace, r);
   for (std::size_t i = 0; i < familiar.size(); ++i) {
     const std::string what = "topology: familiar obstacle " + std::to_string(i);
     in.fixed.push_back(geometry::dilate_miter(geometry::validated(familiar[i], what.c_str()), r));
@@ -369,8 +353,7 @@ TopologyInput make_input(const geometry::Polygon& workspace,
       throw Error(what + ": radius must be finite and > 0, got " + std::to_string(d.radius));
     }
     if (carried && *carried == i) continue;
-    in.movable.push_back(
-        geometry::regular_polygon(Disk{d.center, d.radius + r}, kObjectPolygonSides, true));
+    in.movable.push_back(geometry::disk_polygon(Disk{d.center, d.radius + r}));
     in.movable_ids.push_back(i);
   }
   return in;

@@ -44,18 +44,13 @@
 #include <vector>
 
 #include "geometry/convex.h"
+#include "geometry/dilation.h"
 #include "geometry/polygon.h"
 
 namespace rearm::topology {
 
-// Sides of the circumscribed regular polygon standing for a dilated disk object in
-// make_input() (the reactive layer uses the same count).
-inline constexpr int kObjectPolygonSides = 32;
-
-// make_input() dilates by radius + kContactSlack (m): dilations that touch in exact
-// arithmetic can be 1e-15 m apart after rounding, which would leave a zero-width corridor of
-// freespace between them; the slack closes it (and keeps the robot 1e-9 m further away).
-inline constexpr double kContactSlack = 1e-9;
+// make_input() dilates objects as geometry::disk_polygon and everything by
+// radius + geometry::kContactSlack, as the reactive mapped space does (geometry/dilation.h).
 
 // Adjacency of a freespace component and an object cluster is decided against the cluster
 // grown by kAdjacencySlack × (the bound's bounding-box diagonal): both come out of separate
@@ -110,10 +105,10 @@ TopologyResult check_topology(const TopologyInput& in);
 //  - bound: the workspace (a simple polygon) eroded by radius: W minus the stadiums
 //    (circumscribed-polygon hulls) of its edges, conservative;
 //  - fixed: each familiar polygon dilated with geometry::dilate_miter;
-//  - movable: each object as a circumscribed kObjectPolygonSides-gon of radius ρ + radius,
+//  - movable: each object as a circumscribed geometry::kDiskPolygonSides-gon of radius ρ + radius,
 //    except `carried` (the object in the gripper), which is left out; movable_ids keep the
 //    caller's indices.
-// All dilations use radius + kContactSlack. Throws rearm::Error for a non-finite or
+// All dilations use radius + geometry::kContactSlack. Throws rearm::Error for a non-finite or
 // non-positive radius or object radius, an invalid polygon, a non-finite point, or a carried
 // index out of range.
 TopologyInput make_input(const geometry::Polygon& workspace,

@@ -34,13 +34,7 @@ Polygon random_convex(Rng& rng, int n, const Point& c, double scale) {
   const double ax = scale * rng.uniform(0.5, 1.5);
   const double ay = scale * rng.uniform(0.5, 1.5);
   const double rot = rng.uniform(0, 2 * kPi);
-  Polygon p;
-  for (double a : angles) {
-    const Point e(ax * std::cos(a), ay * std::sin(a));
-    p.vertices.push_back(c + Point(std::cos(rot) * e.x() - std::sin(rot) * e.y(),
-                                   std::sin(rot) * e.x() + std::cos(rot) * e.y()));
-  }
-  return p;
+  return test_support::ellipse_polygon(angles, ax, ay, rot, c);
 }
 
 // Independent signed distance of q outside the edge a→b of a CCW polygon (> 0 outside).

@@ -130,40 +130,32 @@ constexpr std::size_t kFormulasPerTest = 12000;
 constexpr std::size_t kWordsPerAutomaton = 20;
 constexpr std::size_t kChecksPerTest = kFormulasPerTest * 2 * kWordsPerAutomaton;
 
-TEST(TranslateLasso, WithNextAndUnrestrictedNegation) {
+// One random family: formulas of size 5–20 over 2–5 propositions, with or without X and
+// negation above the propositions.
+void check_family(const char* label, std::uint64_t seed, bool next_and_negation) {
   RandomFormulaOptions fo;
   fo.min_size = 5;
   fo.max_size = 20;
   fo.min_aps = 2;
   fo.max_aps = 5;
-  fo.allow_next = true;
-  fo.negation_anywhere = true;
+  fo.allow_next = next_and_negation;
+  fo.negation_anywhere = next_and_negation;
   const auto start = std::chrono::steady_clock::now();
-  const Tally t = run(0x5eed0001, fo, scaled(kFormulasPerTest), kWordsPerAutomaton);
+  const Tally t = run(seed, fo, scaled(kFormulasPerTest), kWordsPerAutomaton);
   print(
-      "with X and !", t,
+      label, t,
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
   EXPECT_EQ(t.mismatches, 0u);
   EXPECT_EQ(t.errors, 0u);
   EXPECT_GE(t.checks, scaled(kChecksPerTest));
 }
 
+TEST(TranslateLasso, WithNextAndUnrestrictedNegation) {
+  check_family("with X and !", 0x5eed0001, true);
+}
+
 TEST(TranslateLasso, WithoutNextNegationOnPropositions) {
-  RandomFormulaOptions fo;
-  fo.min_size = 5;
-  fo.max_size = 20;
-  fo.min_aps = 2;
-  fo.max_aps = 5;
-  fo.allow_next = false;
-  fo.negation_anywhere = false;
-  const auto start = std::chrono::steady_clock::now();
-  const Tally t = run(0x5eed0002, fo, scaled(kFormulasPerTest), kWordsPerAutomaton);
-  print(
-      "no X, ! on propositions", t,
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
-  EXPECT_EQ(t.mismatches, 0u);
-  EXPECT_EQ(t.errors, 0u);
-  EXPECT_GE(t.checks, scaled(kChecksPerTest));
+  check_family("no X, ! on propositions", 0x5eed0002, false);
 }
 
 // Formulas that exercise corner cases of the construction (and past failures): each is

@@ -100,14 +100,7 @@ inline Polygon random_convex(Rng& rng, int n, double a, double b, double theta, 
   for (int k = 0; k < n; ++k) {
     angles.push_back(2 * std::numbers::pi * (k + rng.uniform(0.1, 0.9)) / n);
   }
-  const double ct = std::cos(theta);
-  const double st = std::sin(theta);
-  Polygon p;
-  for (const double t : angles) {
-    const Point e(a * std::cos(t), b * std::sin(t));
-    p.vertices.push_back(c + Point(ct * e.x() - st * e.y(), st * e.x() + ct * e.y()));
-  }
-  return p;
+  return test_support::ellipse_polygon(angles, a, b, theta, c);
 }
 
 }  // namespace rearm::perception::oracle

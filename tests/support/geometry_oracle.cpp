@@ -49,4 +49,16 @@ double boundary_distance(const Polygon& p, const Point& x) {
   return best;
 }
 
+geometry::Polygon ellipse_polygon(const std::vector<double>& angles, double a, double b,
+                                  double theta, const geometry::Point& c) {
+  const double ct = std::cos(theta);
+  const double st = std::sin(theta);
+  geometry::Polygon p;
+  for (const double t : angles) {
+    const geometry::Point e(a * std::cos(t), b * std::sin(t));
+    p.vertices.push_back(c + geometry::Point(ct * e.x() - st * e.y(), st * e.x() + ct * e.y()));
+  }
+  return p;
+}
+
 }  // namespace rearm::test_support

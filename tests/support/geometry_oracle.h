@@ -2,6 +2,8 @@
 // point-in-polygon and distance computations that share no code with framework/geometry.
 #pragma once
 
+#include <vector>
+
 #include "core/rng.h"
 #include "geometry/polygon.h"
 
@@ -12,6 +14,12 @@ namespace rearm::test_support {
 geometry::Polygon random_star(Rng& rng, int n, double r_min, double r_max,
                               const geometry::Point& c = geometry::Point::Zero(),
                               double jitter_lo = 0.05, double jitter_hi = 0.95);
+
+// The points at the given angles on the ellipse with semi-axes (a, b), rotated by theta and
+// centred at c: a convex counter-clockwise polygon when the angles are distinct, increasing
+// and within one turn (built without convex_hull).
+geometry::Polygon ellipse_polygon(const std::vector<double>& angles, double a, double b,
+                                  double theta, const geometry::Point& c);
 
 // Even-odd ray casting in doubles (its verdict is unreliable within ~1e-12 of an edge).
 bool ray_cast_inside(const geometry::Polygon& p, const geometry::Point& x);

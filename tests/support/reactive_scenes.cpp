@@ -25,7 +25,6 @@ using geometry::RegionSet;
 namespace {
 
 // Sides of the circumscribed polygons standing for disks in the exact placement checks.
-constexpr int kDiskSides = 32;
 // Rejection-sampling budget of the free-point draws.
 constexpr int kFreePointAttempts = 100000;
 // A clipped boundary-touching obstacle keeps at least this fraction of its area.
@@ -255,20 +254,6 @@ Polygon make_workspace(WorkspaceShape shape, double s) {
   return w;
 }
 
-RegionSet erode(const Polygon& workspace, double d) {
-  if (!std::isfinite(d) || d <= 0) throw Error("erode: distance must be finite and > 0");
-  const Polygon w = geometry::validated(workspace, "erode workspace");
-  std::vector<Polygon> stadiums;
-  for (std::size_t i = 0, n = w.size(); i < n; ++i) {
-    const Polygon a = geometry::regular_polygon(Disk{w.vertices[i], d}, kDiskSides, true);
-    const Polygon b = geometry::regular_polygon(Disk{w.vertices[(i + 1) % n], d}, kDiskSides, true);
-    std::vector<Point> pts = a.vertices;
-    pts.insert(pts.end(), b.vertices.begin(), b.vertices.end());
-    stadiums.push_back(geometry::convex_hull(std::move(pts)));
-  }
-  return geometry::subtract(geometry::to_set(w), geometry::unite_all(stadiums));
-}
-
 namespace {
 
 ReactiveScene random_scene_once(Rng& rng, const SceneOptions& o) {
@@ -281,7 +266,7 @@ ReactiveScene random_scene_once(Rng& rng, const SceneOptions& o) {
   const Eigen::AlignedBox2d box = bounds(W);
   const double r = o.robot_radius;
   const double half = r + o.margin / 2;
-  const RegionSet inner = erode(W, half);
+  const RegionSet inner = geometry::erode(W, half);
   std::vector<Footprint> placed;
 
   auto draw_shape = [&](Shape& shape, double& size) {
@@ -411,8 +396,8 @@ ReactiveScene random_scene_once(Rng& rng, const SceneOptions& o) {
           if (geometry::nearest_on_boundary(W, c).distance < d.radius + 2 * half) {
             return std::nullopt;
           }
-          Footprint f = footprint(geometry::to_set(
-              geometry::regular_polygon(Disk{c, d.radius + half}, kDiskSides, true)));
+          Footprint f =
+              footprint(geometry::to_set(geometry::disk_polygon(Disk{c, d.radius + half})));
           return std::make_pair(d, std::move(f));
         },
         "movable object", i));
@@ -420,7 +405,7 @@ ReactiveScene random_scene_once(Rng& rng, const SceneOptions& o) {
 
   // The goal: a free point with clearance from every dilated obstacle and the eroded boundary.
   const double g = r + o.goal_clearance;
-  const RegionSet goal_inner = erode(W, g);
+  const RegionSet goal_inner = geometry::erode(W, g);
   std::vector<RegionSet> blocked;
   for (const Polygon& p : scene.familiar) blocked.push_back(geometry::dilate_miter(p, g));
   for (const Polygon& p : scene.unknown) blocked.push_back(geometry::dilate_miter(p, g));

@@ -105,11 +105,6 @@ ReactiveScene random_scene(Rng& rng, const SceneOptions& options = {});
 // The workspace polygon of the options (counter-clockwise, lower-left corner at the origin).
 geometry::Polygon make_workspace(WorkspaceShape shape, double size);
 
-// The workspace eroded by d (the points at distance >= d from its complement), computed with
-// exact Booleans; the boundary's d-neighbourhood is over-approximated by stadiums around
-// circumscribed polygons, so the result is a subset of the true erosion (conservative).
-geometry::RegionSet erode(const geometry::Polygon& workspace, double d);
-
 // Uniform in the freespace F_k of m (rejection sampling with reactive::in_freespace) at
 // distance >= clearance from every boundary of F_k, every familiar component, unknown
 // obstacle and movable disk. Throws rearm::Error after 100000 rejected draws.
