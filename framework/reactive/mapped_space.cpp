@@ -181,10 +181,11 @@ MappedSpace build_mapped_space(const SemanticInput& in, double radius, const Poi
     }
   }
   if (component == nullptr) {
-    throw Error("mapped space: the robot centre (" + std::to_string(robot.x()) + ", " +
-                std::to_string(robot.y()) + ") is not in the freespace for radius " +
-                std::to_string(radius) +
-                " (it starts inside an obstacle, too close to one, or outside the workspace)");
+    throw NotInFreespace(
+        "mapped space: the robot centre (" + std::to_string(robot.x()) + ", " +
+        std::to_string(robot.y()) + ") is not in the freespace for radius " +
+        std::to_string(radius) +
+        " (it starts inside an obstacle, too close to one, or outside the workspace)");
   }
   m.freespace = *component;
   m.enclosing = geometry::convex_hull(m.freespace.outer.vertices);

@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/error.h"
 #include "geometry/convex.h"
 #include "geometry/polygon.h"
 
@@ -45,14 +46,22 @@ struct MappedSpace {
   std::vector<Disk> movable;                // dilated movable objects, kept as they are
 };
 
+// Thrown by build_mapped_space when the robot (or pair) centre is not in the freespace: an
+// expected outcome for the executive (ReactiveController::try_rebuild reports it as a value),
+// unlike malformed input.
+class NotInFreespace : public Error {
+ public:
+  explicit NotInFreespace(const std::string& what) : Error(what) {}
+};
+
 // Builds the mapped space seen from `robot` (the robot's, or the robot–object pair's, centre).
 // Familiar polygons are dilated with miter joins, unknown fragments and the workspace with round
 // joins (the workspace is eroded). Documented fallback: a hole of F_k made of one unknown
 // fragment stays an unknown convex obstacle, one movable object stays a disk; any other
 // cluster (a familiar obstacle, or several overlapping obstacles of any kind) is purged as one
 // familiar component. Throws rearm::Error on invalid input (non-finite numbers, invalid
-// polygons, a non-convex unknown fragment, radius <= 0) and when `robot` is not in the
-// freespace (start inside an obstacle or outside the workspace).
+// polygons, a non-convex unknown fragment, radius <= 0), and NotInFreespace when `robot` is
+// not in the freespace (start inside an obstacle or outside the workspace).
 MappedSpace build_mapped_space(const SemanticInput& input, double radius, const Point& robot);
 
 // Mitered dilations of familiar obstacles, remembered between rebuilds: a familiar obstacle

@@ -42,17 +42,29 @@ ReactiveController::ReactiveController(const DiffeoParams& diffeo, const NavPara
 
 void ReactiveController::rebuild(const SemanticInput& map, double radius, const Point& center,
                                  const Point& goal) {
+  const RebuildResult r = try_rebuild(map, radius, center, goal);
+  if (r.status != RebuildStatus::kOk) throw Error(r.message);
+}
+
+RebuildResult ReactiveController::try_rebuild(const SemanticInput& map, double radius,
+                                              const Point& center, const Point& goal) {
   if (!goal.allFinite()) throw Error("reactive controller: goal is not finite");
-  MappedSpace mapped = build_mapped_space(map, radius, center, dilations_);
+  MappedSpace mapped;
+  try {
+    mapped = build_mapped_space(map, radius, center, dilations_);
+  } catch (const NotInFreespace& e) {
+    return {RebuildStatus::kCenterNotFree, e.what()};
+  }
   Point target = goal;
   if (!in_freespace(mapped, goal)) {
     if (auto snapped = snap_goal(mapped, goal)) target = *snapped;
   }
   if (!in_freespace(mapped, target)) {
-    throw Error("reactive controller: the goal (" + std::to_string(goal.x()) + ", " +
+    return {RebuildStatus::kGoalNotFree,
+            "reactive controller: the goal (" + std::to_string(goal.x()) + ", " +
                 std::to_string(goal.y()) +
                 ") is not in the freespace component of the robot (inside an obstacle, or "
-                "disconnected from the robot)");
+                "disconnected from the robot)"};
   }
   auto diffeo = std::make_unique<Diffeomorphism>(Diffeomorphism::build(mapped, diffeo_params_));
   model_goal_ = diffeo->map(target);
@@ -60,6 +72,7 @@ void ReactiveController::rebuild(const SemanticInput& map, double radius, const 
   diffeo_ = std::move(diffeo);
   goal_ = target;
   ++rebuilds_;
+  return {};
 }
 
 Point ReactiveController::holonomic(const Point& x, double dt) {

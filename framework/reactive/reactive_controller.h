@@ -6,6 +6,7 @@
 
 #include <memory>
 #include <optional>
+#include <string>
 
 #include "reactive/diffeomorphism.h"
 #include "reactive/kinematics.h"
@@ -20,6 +21,19 @@ enum class RobotModel { kHolonomic, kUnicycle };
 // Halvings of a command before the discrete-time safety filter gives up and stops the robot.
 inline constexpr int kSafetyHalvings = 30;
 
+// Outcome of ReactiveController::try_rebuild: the two situations the executive expects and
+// handles (docs/executive.md), as values.
+enum class RebuildStatus {
+  kOk,
+  kCenterNotFree,  // the robot (or pair) centre is not in the freespace
+  kGoalNotFree,    // the goal is inside an obstacle or in another freespace component
+};
+
+struct RebuildResult {
+  RebuildStatus status = RebuildStatus::kOk;
+  std::string message;  // why, when not kOk
+};
+
 class ReactiveController {
  public:
   ReactiveController(const DiffeoParams& diffeo, const NavParams& nav);
@@ -31,6 +45,10 @@ class ReactiveController {
   // of the executive decides what to do then). A goal on an obstacle boundary (outside the
   // freespace by <= 1e-6 m) is snapped to the nearest freespace point (goal() returns it).
   void rebuild(const SemanticInput& map, double radius, const Point& center, const Point& goal);
+  // The same, with a centre or goal outside the freespace reported as a value (the controller is
+  // left as it was); malformed input still throws rearm::Error.
+  RebuildResult try_rebuild(const SemanticInput& map, double radius, const Point& center,
+                            const Point& goal);
 
   bool ready() const { return diffeo_ != nullptr; }
   // Commands at the current state (docs/reactive.md §4), to be held for one step of `dt`.
