@@ -47,4 +47,10 @@ double distance(const Polygon& p, const Point& x) {
   return nearest_on_boundary(p, x).distance;
 }
 
+double signed_distance(const Polygon& p, const Point& x) {
+  check_finite(x, "signed_distance");
+  const double d = nearest_on_boundary(p, x).distance;
+  return contains(p, x) ? -d : d;
+}
+
 }  // namespace rearm::geometry

@@ -14,6 +14,10 @@ struct Nearest {
 Nearest nearest_on_boundary(const Polygon& p, const Point& x);
 // Distance from x to the closed polygon: 0 inside, else the boundary distance.
 double distance(const Polygon& p, const Point& x);
+// Signed distance from x to the polygon's boundary: negative inside (the boundary counts as
+// inside, at distance 0). Clearance of a point to an obstacle, or to a workspace from within
+// (negated).
+double signed_distance(const Polygon& p, const Point& x);
 // Nearest point of a segment [a, b] to x.
 Point nearest_on_segment(const Point& a, const Point& b, const Point& x);
 

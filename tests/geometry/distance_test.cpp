@@ -65,8 +65,18 @@ TEST(DistanceTest, SquareHandCases) {
   EXPECT_TRUE(c.point.isApprox(Point(1, 1)));
 }
 
+TEST(DistanceTest, SignedDistanceHandCases) {
+  const Polygon sq = unit_square();
+  EXPECT_NEAR(signed_distance(sq, Point(0.3, 0.2)), -0.2, 1e-15);  // inside: minus the depth
+  EXPECT_NEAR(signed_distance(sq, Point(0.5, 0.5)), -0.5, 1e-15);
+  EXPECT_EQ(signed_distance(sq, Point(1, 0.5)), 0);  // on the boundary
+  EXPECT_NEAR(signed_distance(sq, Point(2, 3)), std::hypot(1.0, 2.0), 1e-15);
+  EXPECT_NEAR(signed_distance(sq, Point(-2, 0.6)), 2, 1e-15);
+}
+
 TEST(DistanceTest, NonFinitePointThrows) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(signed_distance(unit_square(), Point(nan, 0)), Error);
   EXPECT_THROW(distance(unit_square(), Point(nan, 0)), Error);
   EXPECT_THROW(nearest_on_boundary(unit_square(), Point(0, INFINITY)), Error);
 }
