@@ -23,6 +23,7 @@ ASAN_TESTS+=";world_test;sensor_test;semantic_map_test;perception_property_test"
 ASAN_TESTS+=";diffeomorphism_test;degenerate_input_test;mapped_space_test;local_freespace_test"
 ASAN_TESTS+=";navigation_test"
 ASAN_TESTS+=";grasp_test;kinematics_test;closed_loop_test;topology_check_test;topology_property_test"
+ASAN_TESTS+=";progress_monitor_test;kinematic_plant_test;interface_layer_test;executive_test;end_to_end_test"
 cmake -S . -B "$ASAN_BUILD" -DCMAKE_BUILD_TYPE=Debug -DREARM_SANITIZE=ON -DREARM_WERROR=ON \
   -DREARM_BUILD_TESTS=ON -DREARM_BUILD_BENCH=OFF "-DREARM_TESTS=$ASAN_TESTS"
 cmake --build "$ASAN_BUILD" -j"$JOBS"

@@ -1,0 +1,160 @@
+#include "executive/interface_layer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <string>
+
+#include "core/error.h"
+#include "geometry/boolean.h"
+#include "geometry/dilation.h"
+#include "geometry/distance.h"
+
+namespace rearm::executive {
+namespace {
+
+const geometry::Disk& object_disk(const perception::SemanticMap& map, std::string_view id,
+                                  std::optional<geometry::Disk>& holder) {
+  holder = map.object(id);
+  if (!holder) throw Error("interface layer: unknown object '" + std::string(id) + "'");
+  return *holder;
+}
+
+// Points checked along the docking segment.
+constexpr int kDockSamples = 4;
+// The reactive mapped space dilates unknown fragments by circumscribed polygons, up to
+// kMaxDilationError beyond the exact dilation: DISASSEMBLE targets keep this much more room.
+constexpr double kUnknownRoom = 1 + 2 * geometry::kMaxDilationError;
+
+}  // namespace
+
+double known_clearance(const perception::SemanticMap& map, const Point& x,
+                       std::string_view except) {
+  if (!x.allFinite()) throw Error("interface layer: point is not finite");
+  double best = -geometry::signed_distance(map.workspace(), x);
+  for (const geometry::Polygon& p : map.familiar())
+    best = std::min(best, geometry::signed_distance(p, x));
+  for (const geometry::Polygon& p : map.unknown())
+    best = std::min(best, geometry::signed_distance(p, x));
+  const auto& disks = map.movable();
+  const auto& ids = map.movable_ids();
+  for (std::size_t i = 0; i < disks.size(); ++i) {
+    if (!except.empty() && ids[i] == except) continue;
+    best = std::min(best, (disks[i].center - x).norm() - disks[i].radius);
+  }
+  return best;
+}
+
+geometry::RegionSet freespace_of(const topology::TopologyInput& in) {
+  geometry::RegionSet obstacles;
+  for (const geometry::RegionSet& f : in.fixed) obstacles = geometry::unite(obstacles, f);
+  if (!in.movable.empty()) {
+    obstacles = geometry::unite(obstacles, geometry::unite_all(in.movable));
+  }
+  return geometry::subtract(in.bound, obstacles);
+}
+
+std::vector<GraspCandidate> grasp_candidates(const perception::SemanticMap& map,
+                                             std::string_view object, double r, const Point& robot,
+                                             const GraspParams& p) {
+  if (p.samples < 1) throw Error("grasp: samples must be >= 1");
+  if (!std::isfinite(p.standoff) || !(p.standoff > p.dock_gap) || !(p.dock_gap > 0) ||
+      !std::isfinite(p.pair_margin) || !(p.pair_margin >= 0)) {
+    throw Error("grasp: need standoff > dock_gap > 0 and pair_margin >= 0 (finite)");
+  }
+  if (!std::isfinite(r) || !(r > 0)) throw Error("grasp: robot radius must be finite and > 0");
+  if (!robot.allFinite()) throw Error("grasp: robot position is not finite");
+  std::optional<geometry::Disk> holder;
+  const geometry::Disk& m = object_disk(map, object, holder);
+  std::vector<GraspCandidate> out;
+  for (int k = 0; k < p.samples; ++k) {
+    const double a = 2 * std::numbers::pi * k / p.samples;
+    const Point u(std::cos(a), std::sin(a));
+    GraspCandidate c;
+    c.approach = m.center + (m.radius + r + p.standoff) * u;
+    c.contact = m.center + (m.radius + r + p.dock_gap) * u;
+    c.pair_center = m.center + r * u;
+    c.distance = (c.approach - robot).norm();
+    // The approach point itself is checked against the object too (clearance standoff).
+    if (known_clearance(map, c.approach) < r) continue;
+    bool dock_clear = true;
+    for (int s = 1; s <= kDockSamples && dock_clear; ++s) {
+      const Point q = c.approach + (c.contact - c.approach) * (double(s) / kDockSamples);
+      dock_clear = known_clearance(map, q, object) >= r;
+    }
+    if (!dock_clear) continue;
+    if (known_clearance(map, c.pair_center, object) < r + m.radius + p.pair_margin) continue;
+    out.push_back(c);
+  }
+  std::stable_sort(out.begin(), out.end(), [](const GraspCandidate& a, const GraspCandidate& b) {
+    return a.distance < b.distance;
+  });
+  return out;
+}
+
+std::optional<Point> disassemble_target(const geometry::Region& f,
+                                        const perception::SemanticMap& map,
+                                        std::string_view carried,
+                                        const std::vector<RegionOfInterest>& regions,
+                                        double pair_radius, double inset) {
+  if (!std::isfinite(pair_radius) || !(pair_radius > 0) || !std::isfinite(inset) || !(inset >= 0)) {
+    throw Error("disassemble target: pair radius must be > 0 and inset >= 0 (finite)");
+  }
+  const auto& disks = map.movable();
+  const auto& ids = map.movable_ids();
+  auto score = [&](const Point& q) {
+    double s = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < disks.size(); ++i) {
+      if (ids[i] == carried) continue;
+      s = std::min(s, (disks[i].center - q).norm() - disks[i].radius);
+    }
+    for (const RegionOfInterest& r : regions) s = std::min(s, geometry::distance(r.polygon, q));
+    return s;
+  };
+  auto clear_of_unknown = [&](const Point& q) {
+    for (const geometry::Polygon& u : map.unknown()) {
+      if (geometry::signed_distance(u, q) < pair_radius * kUnknownRoom) return false;
+    }
+    return true;
+  };
+  std::optional<Point> best;
+  double best_score = -std::numeric_limits<double>::infinity();
+  auto consider = [&](const geometry::Polygon& ring, bool hole) {
+    const std::size_t n = ring.size();
+    for (std::size_t i = 0; i < n; ++i) {
+      const Point& a = ring.vertices[i];
+      const Point& b = ring.vertices[(i + 1) % n];
+      const Point edge = b - a;
+      if (edge.norm() == 0) continue;
+      Point mid = (a + b) / 2;
+      // Left of a counter-clockwise outer edge is inside F; a hole's inside is not F.
+      Point normal = Point(-edge.y(), edge.x()) / edge.norm();
+      if (hole) normal = -normal;
+      const Point in = mid + inset * normal;
+      if (inset > 0 && geometry::contains(f, in)) mid = in;
+      if (!clear_of_unknown(mid)) continue;
+      const double s = score(mid);
+      if (s > best_score) {
+        best_score = s;
+        best = mid;
+      }
+    }
+  };
+  consider(f.outer, false);
+  for (const geometry::Polygon& h : f.holes) consider(h, true);
+  return best;
+}
+
+bool disassembly_done(const Point& xc, double pair_radius, double r,
+                      const perception::SemanticMap& map, std::string_view carried,
+                      const std::vector<RegionOfInterest>& regions) {
+  for (const RegionOfInterest& reg : regions) {
+    if (geometry::distance(reg.polygon, xc) <= pair_radius) return false;
+  }
+  double max_rho = 0;
+  for (const auto& m : map.ground_truth().movable) max_rho = std::max(max_rho, m.disk.radius);
+  return known_clearance(map, xc, carried) >= 2 * (r + max_rho);
+}
+
+}  // namespace rearm::executive

@@ -1,0 +1,84 @@
+// The interface layer's geometric choices (paper §IV and §V-B; docs/executive.md, "Actions"
+// and "Fix mode"): where the robot goes for each action, which side of an object it grips
+// from, where it disassembles a blocking object to, and when it may stop early. The state
+// machine that sequences them is executive.h.
+#pragma once
+
+#include <optional>
+#include <string_view>
+#include <vector>
+
+#include "executive/region.h"
+#include "geometry/polygon.h"
+#include "perception/semantic_map.h"
+#include "topology/topology_check.h"
+
+namespace rearm::executive {
+
+using geometry::Point;
+
+// Signed clearance (m) of point x from everything the semantic map knows: the workspace
+// boundary, the localized familiar obstacles, the visible unknown fragments and the movable
+// obstacles (not the carried object), except object `except`. Negative inside any of them.
+double known_clearance(const perception::SemanticMap& map, const Point& x,
+                       std::string_view except = {});
+
+// F_list of Appendix III without the choice of a component: bound − ∪(fixed ∪ movable), on
+// exact Booleans (geometry/boolean.h).
+geometry::RegionSet freespace_of(const topology::TopologyInput& in);
+
+// GRASP(M_i): where the robot stands before gripping (paper §IV: "a collision-free location on
+// the boundary of object M_i, contained in the freespace F").
+struct GraspParams {
+  int samples = 72;        // candidate directions around the object
+  double standoff = 0.02;  // m beyond the dilated boundary ρ_i + r: the approach point
+  double dock_gap = 1e-3;  // m: the gripper closes this far from contact
+  // m added to the pair radius r + ρ_i for every pair computation (topology, mapped space):
+  // covers the dock gap and the alignment tolerance, by which the gripped object sits off the
+  // pair disk's nominal position.
+  double pair_margin = 5e-3;
+};
+
+struct GraspCandidate {
+  Point approach;     // robot centre before docking, on the circle ρ_i + r + standoff
+  Point contact;      // robot centre when the gripper closes (gap dock_gap)
+  Point pair_center;  // centre of the robot–object pair disk once gripped
+  double distance;    // from the robot's current position to `approach`
+};
+
+// Candidates around object `object` (its true disk, map.object()), nearest to `robot` first,
+// keeping those whose docking segment (approach → contact) keeps the robot clear (known
+// clearance >= r, the object itself excepted) and whose pair disk (radius r + ρ_i +
+// pair_margin) is clear of everything known but the object. Membership in the exact
+// freespaces is left to the caller (executive.cpp). Throws rearm::Error for an unknown object
+// or invalid parameters.
+std::vector<GraspCandidate> grasp_candidates(const perception::SemanticMap& map,
+                                             std::string_view object, double robot_radius,
+                                             const Point& robot, const GraspParams& p);
+
+// DISASSEMBLE(M_i, x*) target (paper §V-B): the midpoint of the edge of the pair's freespace F
+// that maximizes the minimum distance to every other movable object (disk boundary) and every
+// region of interest (0 inside one). Each midpoint is moved `inset` (m) into F along the edge's
+// inward normal when that point is still in F (the reactive controller then needs no boundary
+// snap), and candidates whose point is not clear of the visible unknown fragments by
+// pair_radius are skipped (F ignores unknown obstacles, the reactive mapped space does not).
+// Ties go to the first edge (outer boundary first, counter-clockwise). nullopt when F has no
+// usable edge.
+inline constexpr double kDisassembleInset = 0.01;
+std::optional<Point> disassemble_target(const geometry::Region& freespace,
+                                        const perception::SemanticMap& map,
+                                        std::string_view carried,
+                                        const std::vector<RegionOfInterest>& regions,
+                                        double pair_radius, double inset = kDisassembleInset);
+
+// Early stop of DISASSEMBLE (paper §V-B): the pair disk (centre xc, radius pair_radius)
+// intersects no region of interest, and xc is at least 2(r + max_k ρ_k) from every other
+// object. rearm reads the paper's "all other objects in the workspace" as every obstacle the
+// robot knows (movable objects, localized familiar obstacles, visible unknown fragments and the
+// workspace boundary): with movable objects alone, an object blocking a corridor between two
+// walls would be dropped where it was gripped and block again.
+bool disassembly_done(const Point& xc, double pair_radius, double robot_radius,
+                      const perception::SemanticMap& map, std::string_view carried,
+                      const std::vector<RegionOfInterest>& regions);
+
+}  // namespace rearm::executive

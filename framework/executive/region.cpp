@@ -1,0 +1,42 @@
+#include "executive/region.h"
+
+#include <set>
+
+#include "core/error.h"
+#include "geometry/convex.h"
+
+namespace rearm::executive {
+
+std::vector<RegionOfInterest> validated(const std::vector<RegionOfInterest>& regions,
+                                        const geometry::Polygon& workspace) {
+  std::vector<RegionOfInterest> out;
+  std::set<std::string> seen;
+  for (const RegionOfInterest& r : regions) {
+    if (r.id.empty()) throw Error("region of interest: empty id");
+    if (!seen.insert(r.id).second) throw Error("region of interest '" + r.id + "': id used twice");
+    const std::string what = "region of interest '" + r.id + "'";
+    RegionOfInterest v{r.id, geometry::validated(r.polygon, what.c_str())};
+    for (const geometry::Point& p : v.polygon.vertices) {
+      if (!geometry::contains(workspace, p)) {
+        throw Error(what + ": vertex (" + std::to_string(p.x()) + ", " + std::to_string(p.y()) +
+                    ") lies outside the workspace");
+      }
+    }
+    out.push_back(std::move(v));
+  }
+  return out;
+}
+
+geometry::Point region_target(const RegionOfInterest& region) {
+  const geometry::Point c = region.polygon.centroid();
+  if (geometry::contains(region.polygon, c)) return c;
+  const std::vector<geometry::Polygon> triangles = geometry::triangulate(region.polygon);
+  const geometry::Polygon* best = nullptr;
+  for (const geometry::Polygon& t : triangles) {
+    if (best == nullptr || t.area() > best->area()) best = &t;
+  }
+  if (best == nullptr) throw Error("region of interest '" + region.id + "': cannot triangulate");
+  return best->centroid();
+}
+
+}  // namespace rearm::executive

@@ -1,0 +1,63 @@
+// The closed loop of one task without Box2D concerns (docs/architecture.md, "A control tick"):
+// plant → perception (object positions, sensor update) → executive (mission controller,
+// topology check, reactive controller) → gripper and (v, ω) → plant, at a fixed step, until
+// the task ends with a reason (mission complete, mission infeasible, an action stuck, the time
+// budget exhausted). The plant is the ground truth for collisions and clearance.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "executive/executive.h"
+#include "executive/plant.h"
+#include "executive/region.h"
+#include "ltl/formula.h"
+#include "perception/sensor.h"
+#include "perception/world.h"
+
+namespace rearm::executive {
+
+// Everything a task needs besides the plant: the world as the plant starts it (the ground
+// truth perception reads from), the regions, the formula and the robot.
+struct TaskSpec {
+  perception::World world;
+  std::vector<RegionOfInterest> regions;
+  std::string formula;  // an LTL formula over move(l), grasp(M), release(M,l)
+  perception::SensorParams sensor{3.0};
+  perception::ChangeTolerances map_tolerances;
+  ExecutiveParams executive;
+  ltl::TranslateOptions translate;
+};
+
+struct TaskOptions {
+  double dt = reactive::kDefaultStep;  // s
+  double max_time = 1200;              // s of simulated time (the time budget)
+  bool record_path = true;
+};
+
+struct TaskResult {
+  TaskStatus status = TaskStatus::kRunning;
+  std::string reason;
+  std::vector<ActionRecord> actions;
+  int fix_mode_entries = 0;
+  int collisions = 0;
+  double min_clearance = 0;  // m, ground truth over every step
+  double sim_time = 0;       // s
+  int steps = 0;
+  double robot_path_length = 0;   // m
+  double object_path_length = 0;  // m, summed over objects
+  double controller_time = 0;     // s of wall time inside Executive::step
+  double wall_time = 0;           // s of wall time for the whole run
+  int rebuilds = 0;
+  int topology_checks = 0;
+  std::vector<Pose> path;                        // robot poses (when recorded)
+  std::vector<std::vector<Point>> object_paths;  // per object, centres (when recorded)
+};
+
+// Runs the task on `plant` (whose objects are in the world order of spec.world.movable). The
+// formula is parsed and checked against the scenario's names (objects and regions); bad input
+// (a malformed formula, unknown names, invalid regions or parameters) throws rearm::Error
+// before the first step. Everything that happens afterwards is a value in the result.
+TaskResult run_task(const TaskSpec& spec, Plant& plant, const TaskOptions& options = {});
+
+}  // namespace rearm::executive

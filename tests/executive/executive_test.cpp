@@ -1,0 +1,207 @@
+// The executive's contract beyond the paper's figures: bad input is rejected with its name
+// before the first step; every task ends with a reason (a patrol after its action limit, the
+// time budget, a gripper that does not close, an unknown obstacle over the target); the
+// symbolic layer's alternatives are used after an infeasible action; gripper prerequisites
+// are inserted; and a run is deterministic. Checked against the plant's ground truth.
+#include "executive/executive.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "core/error.h"
+#include "executive/kinematic_plant.h"
+#include "executive/task_runner.h"
+#include "support/task_scenes.h"
+
+namespace rearm::executive {
+namespace {
+
+using geometry::Polygon;
+using test_support::rect;
+
+std::string error_of(const TaskSpec& spec, const Pose& start) {
+  try {
+    KinematicPlant plant(spec.world, spec.executive.robot_radius, start);
+    run_task(spec, plant);
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TaskSpec open_room(const std::string& formula) {
+  TaskSpec t;
+  t.world.workspace = rect(0, 0, 10, 6);
+  t.world.movable = {{"M1", geometry::Disk{Point(3, 3), 0.25}}};
+  t.regions = {{"l1", rect(1, 1, 2, 2)}, {"l2", rect(8, 4, 9, 5)}, {"l3", rect(8, 1, 9, 2)}};
+  t.formula = formula;
+  return t;
+}
+
+const Pose kStart{Point(5, 3), 0};
+
+bool inside(const TaskSpec& t, const std::string& region, const Point& p) {
+  for (const auto& r : t.regions) {
+    if (r.id == region) return geometry::contains(r.polygon, p);
+  }
+  return false;
+}
+
+TEST(Executive, BadInputIsRejectedWithItsName) {
+  EXPECT_NE(error_of(open_room("<>move(l9)"), kStart).find("l9"), std::string::npos);
+  EXPECT_NE(error_of(open_room("<>grasp(M7)"), kStart).find("M7"), std::string::npos);
+  EXPECT_NE(error_of(open_room("<>(move(l1)"), kStart).find("parse"), std::string::npos);
+  TaskSpec t = open_room("<>move(l1)");
+  t.regions.push_back({"l4", rect(9, 5, 11, 7)});
+  EXPECT_NE(error_of(t, kStart).find("l4"), std::string::npos);
+  t = open_room("<>move(l1)");
+  t.executive.goal_tolerance = std::nan("");
+  EXPECT_NE(error_of(t, kStart).find("goal_tolerance"), std::string::npos);
+  t = open_room("<>move(l1)");
+  t.sensor.range = -1;
+  EXPECT_NE(error_of(t, kStart), "no error");
+  // A plant with a different object list than the task's world.
+  t = open_room("<>move(l1)");
+  perception::World other = t.world;
+  other.movable.clear();
+  KinematicPlant plant(other, 0.2, kStart);
+  EXPECT_THROW(run_task(t, plant), Error);
+  TaskOptions o;
+  o.dt = 0;
+  KinematicPlant plant2(t.world, 0.2, kStart);
+  EXPECT_THROW(run_task(t, plant2, o), Error);
+}
+
+TEST(Executive, PatrolEndsAfterItsActionLimit) {
+  TaskSpec t = open_room("[]<>move(l1) && []<>move(l2)");
+  t.executive.max_ltl_actions = 4;
+  KinematicPlant plant(t.world, 0.2, kStart);
+  const TaskResult r = run_task(t, plant);
+  ASSERT_EQ(r.status, TaskStatus::kCompleted) << r.reason;
+  ASSERT_EQ(r.actions.size(), 4u);
+  // Each visited region alternates, and the robot was inside it when the action succeeded.
+  for (std::size_t i = 0; i < r.actions.size(); ++i) {
+    EXPECT_EQ(r.actions[i].outcome, ActionOutcome::kSucceeded);
+    EXPECT_NE(r.actions[i].action, r.actions[(i + 1) % 4].action);
+    const std::size_t step = static_cast<std::size_t>(std::lround(r.actions[i].t_end / 0.01));
+    ASSERT_LT(step, r.path.size());
+    const std::string region = r.actions[i].action.substr(5, 2);
+    EXPECT_TRUE(inside(t, region, r.path[step].x)) << r.actions[i].action;
+  }
+  EXPECT_EQ(r.collisions, 0);
+}
+
+TEST(Executive, TimeBudgetEndsTheTask) {
+  TaskSpec t = open_room("<>move(l1)");
+  KinematicPlant plant(t.world, 0.2, kStart);
+  TaskOptions o;
+  o.max_time = 2;
+  const TaskResult r = run_task(t, plant, o);
+  EXPECT_EQ(r.status, TaskStatus::kTimeout);
+  EXPECT_NE(r.reason.find("move(l1)"), std::string::npos) << r.reason;
+  ASSERT_EQ(r.actions.size(), 1u);
+  EXPECT_EQ(r.actions[0].outcome, ActionOutcome::kAbandoned);
+  EXPECT_NEAR(r.sim_time, 2.0, 0.011);
+}
+
+// A plant whose gripper never closes.
+class BrokenGripper final : public Plant {
+ public:
+  explicit BrokenGripper(KinematicPlant p) : p_(std::move(p)) {}
+  Pose pose() const override { return p_.pose(); }
+  Point object_center(std::size_t i) const override { return p_.object_center(i); }
+  std::size_t object_count() const override { return p_.object_count(); }
+  bool grip(std::size_t) override { return false; }
+  void release() override { p_.release(); }
+  std::optional<std::size_t> held() const override { return std::nullopt; }
+  void step(const Twist& u, double dt) override { p_.step(u, dt); }
+  double clearance() const override { return p_.clearance(); }
+  int collisions() const override { return p_.collisions(); }
+
+ private:
+  KinematicPlant p_;
+};
+
+TEST(Executive, GripperFailureEndsStuck) {
+  TaskSpec t = open_room("<>grasp(M1)");
+  BrokenGripper plant(KinematicPlant(t.world, 0.2, kStart));
+  const TaskResult r = run_task(t, plant);
+  EXPECT_EQ(r.status, TaskStatus::kStuck);
+  EXPECT_NE(r.reason.find("did not close on M1"), std::string::npos) << r.reason;
+}
+
+TEST(Executive, ReleaseWithoutTheObjectGraspsItFirst) {
+  TaskSpec t = open_room("<>release(M1,l2)");
+  KinematicPlant plant(t.world, 0.2, kStart);
+  const TaskResult r = run_task(t, plant);
+  ASSERT_EQ(r.status, TaskStatus::kCompleted) << r.reason;
+  ASSERT_EQ(r.actions.size(), 2u);
+  EXPECT_EQ(r.actions[0].action, "grasp(M1)");
+  EXPECT_TRUE(r.actions[0].fix);
+  EXPECT_EQ(r.actions[1].action, "release(M1,l2)");
+  EXPECT_FALSE(r.actions[1].fix);
+  EXPECT_TRUE(inside(t, "l2", plant.object_center(0)));
+  EXPECT_EQ(r.collisions, 0);
+  EXPECT_EQ(r.fix_mode_entries, 0);  // a prerequisite, not a blocked target
+}
+
+TEST(Executive, InfeasibleReleaseFallsBackOnTheFormulasAlternative) {
+  // l1 is walled in by a familiar obstacle; the formula also allows l3.
+  TaskSpec t = open_room("<>(grasp(M1) && <>(release(M1,l2) || release(M1,l3)))");
+  // A U-shaped wall around l2 closed by a lid.
+  t.world.familiar = {
+      {"P1", Polygon{{Point(7.5, 3.5), Point(9.5, 3.5), Point(9.5, 5.5), Point(9.3, 5.5),
+                      Point(9.3, 3.7), Point(7.7, 3.7), Point(7.7, 5.5), Point(7.5, 5.5)}}},
+      {"P2", rect(7.5, 5.5, 9.5, 5.7)}};
+  KinematicPlant plant(t.world, 0.2, kStart);
+  const TaskResult r = run_task(t, plant);
+  ASSERT_EQ(r.status, TaskStatus::kCompleted) << r.reason;
+  bool l2_infeasible = false;
+  for (const ActionRecord& a : r.actions) {
+    if (a.action == "release(M1,l2)") {
+      EXPECT_EQ(a.outcome, ActionOutcome::kInfeasible);
+      l2_infeasible = true;
+    }
+  }
+  EXPECT_TRUE(l2_infeasible);
+  EXPECT_EQ(r.actions.back().action, "release(M1,l3)");
+  EXPECT_TRUE(inside(t, "l3", plant.object_center(0)));
+  EXPECT_EQ(r.collisions, 0);
+}
+
+TEST(Executive, TargetUnderAnUnknownObstacleIsInfeasible) {
+  // An unknown convex obstacle covers l2's centre: the topology check (familiar obstacles and
+  // objects) passes it, the reactive mapped space does not; the action is infeasible and so is
+  // the mission.
+  TaskSpec t = open_room("<>move(l2)");
+  t.world.unknown = {{"C1", rect(8.2, 4.2, 8.8, 4.8)}};
+  KinematicPlant plant(t.world, 0.2, kStart);
+  const TaskResult r = run_task(t, plant);
+  EXPECT_EQ(r.status, TaskStatus::kInfeasible) << r.reason;
+  ASSERT_FALSE(r.actions.empty());
+  EXPECT_NE(r.actions[0].reason.find("unknown obstacles"), std::string::npos)
+      << r.actions[0].reason;
+  EXPECT_EQ(r.collisions, 0);
+}
+
+TEST(Executive, RunsAreDeterministic) {
+  const TaskSpec t = test_support::fig3_task();
+  KinematicPlant a(t.world, 0.2, test_support::fig3_start());
+  KinematicPlant b(t.world, 0.2, test_support::fig3_start());
+  const TaskResult ra = run_task(t, a);
+  const TaskResult rb = run_task(t, b);
+  ASSERT_EQ(ra.path.size(), rb.path.size());
+  for (std::size_t i = 0; i < ra.path.size(); ++i) {
+    ASSERT_EQ(ra.path[i].x, rb.path[i].x) << i;
+    ASSERT_EQ(ra.path[i].psi, rb.path[i].psi) << i;
+  }
+  ASSERT_EQ(ra.actions.size(), rb.actions.size());
+  for (std::size_t i = 0; i < ra.actions.size(); ++i) {
+    EXPECT_EQ(ra.actions[i].action, rb.actions[i].action);
+    EXPECT_EQ(ra.actions[i].t_end, rb.actions[i].t_end);
+  }
+}
+
+}  // namespace
+}  // namespace rearm::executive
