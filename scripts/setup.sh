@@ -11,7 +11,7 @@ PACKAGES=(
   libboost-filesystem-dev libboost-serialization-dev libboost-system-dev
   libtbb-dev libbenchmark-dev libgtest-dev libgmock-dev libyaml-cpp-dev
   # independent LTL translator used by the tests; plotting
-  spin python3-matplotlib
+  spin python3-matplotlib python3-pil
 )
 
 missing=()

@@ -18,6 +18,7 @@
 #include "core/error.h"
 #include "core/rng.h"
 #include "geometry/distance.h"
+#include "python_plot.h"
 #include "reactive/diffeomorphism.h"
 #include "reactive/kinematics.h"
 #include "reactive/mapped_space.h"
@@ -321,39 +322,6 @@ const char* kind_name(reactive::Purge::Kind k) {
   return "?";
 }
 
-std::string shell_quote(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) {
-    if (c == '\'') {
-      q += "'\\''";
-    } else {
-      q += c;
-    }
-  }
-  return q + "'";
-}
-
-// The plotting script next to this source file's folder (experiments/plot/diffeo.py), else
-// relative to the working directory.
-fs::path plot_script() {
-  const fs::path here = fs::path(__FILE__).parent_path().parent_path() / "plot" / "diffeo.py";
-  if (fs::exists(here)) return here;
-  return fs::path("experiments") / "plot" / "diffeo.py";
-}
-
-// A python3 that has matplotlib: $REARM_PYTHON, else python3 on PATH, else /usr/bin/python3.
-std::string find_python() {
-  std::vector<std::string> candidates;
-  if (const char* env = std::getenv("REARM_PYTHON"); env && *env) candidates.push_back(env);
-  candidates.push_back("python3");
-  candidates.push_back("/usr/bin/python3");
-  for (const std::string& py : candidates) {
-    const std::string cmd = shell_quote(py) + " -c 'import matplotlib' > /dev/null 2>&1";
-    if (std::system(cmd.c_str()) == 0) return py;
-  }
-  return "";
-}
-
 }  // namespace
 
 int run_diffeo(const std::vector<std::string>& args) {
@@ -599,8 +567,8 @@ int run_diffeo(const std::vector<std::string>& args) {
   std::printf("wrote %s\n", json_path.string().c_str());
 
   if (plot) {
-    const std::string py = find_python();
-    const fs::path script = plot_script();
+    const std::string py = find_python({"matplotlib"});
+    const fs::path script = plot_script("diffeo.py");
     if (py.empty()) {
       std::fprintf(stderr,
                    "rearm diffeo: warning: no python3 with matplotlib found; the plots were "

@@ -14,6 +14,8 @@ const Command kCommands[] = {
     {"translate", "translate an LTL formula into a Büchi automaton", &rearm::cli::run_translate},
     {"plan", "run the mission controller against a perfect executor", &rearm::cli::run_plan},
     {"diffeo", "build and plot the diffeomorphism of a static scene", &rearm::cli::run_diffeo},
+    {"run", "run a scenario's task in the Box2D world (metrics, figure, animation)",
+     &rearm::cli::run_run},
 };
 
 void print_help() {

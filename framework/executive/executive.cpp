@@ -345,6 +345,13 @@ Executive::Advance Executive::advance(Activity& a, const Pose& pose, double t, d
       return out;
     case Phase::kOpen:
       if (map_.carried()) {
+        // The robot stood still for one tick (so the object is at rest when it is let go);
+        // now the gripper opens, and the map must say so on the next tick.
+        if (!a.open_sent) {
+          gripper_ = GripperAction::kOpen;
+          a.open_sent = true;
+          return out;
+        }
         out.kind = Advance::kStuck;
         out.reason = "the gripper did not open";
         return out;
@@ -457,11 +464,11 @@ Executive::Advance Executive::navigate(Activity& a, const Pose& pose, double t, 
         return out;
       case Kind::kRelease:
       case Kind::kDisassemble:
-        gripper_ = GripperAction::kOpen;
         a.note = why;
         a.phase = Phase::kOpen;
         a.phase_start = t;
-        return out;  // stand still while the gripper opens
+        a.open_sent = false;
+        return out;  // stop for one tick, then open (Phase::kOpen)
     }
   }
   if (auto stuck = a.monitor.observe(t, pose, dist, map_.version())) {

@@ -11,9 +11,9 @@
 //  - GRASP only: align (turn in place until the gripper faces the object, paper §V-B), dock
 //    (drive straight to dock_gap from contact), close the gripper and wait one tick for the
 //    map to report the object carried;
-//  - RELEASE and DISASSEMBLE: open the gripper (one tick), then back off straight until the
-//    robot is clear of the released object's dilation (so the next action starts in the
-//    freespace).
+//  - RELEASE and DISASSEMBLE: stop (one tick, so the object is let go at rest), open the
+//    gripper (one tick), then back off straight until the robot is clear of the released
+//    object's dilation (so the next action starts in the freespace).
 //
 // Choices beyond the paper (each documented where it is made):
 //  - RELEASE(M, ℓ) without M in the gripper first grasps M, and GRASP(M) (or RELEASE of another
@@ -145,7 +145,8 @@ class Executive {
     std::vector<geometry::Disk> plan_movable;
     std::optional<std::string> plan_carried;
     std::optional<Point> target;
-    std::string note;  // how navigation ended (reached x*, or stopped early), for the log
+    std::string note;        // how navigation ended (reached x*, or stopped early), for the log
+    bool open_sent = false;  // Phase::kOpen: the open command was given
     // Reactive rebuild state.
     std::uint64_t built_version = 0;
     bool built = false;

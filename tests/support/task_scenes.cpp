@@ -15,7 +15,7 @@ executive::TaskSpec base(const Polygon& workspace) {
   executive::TaskSpec t;
   t.world.workspace = workspace;
   t.sensor.range = 3.0;
-  t.map_tolerances.fragment = 0.05;
+  t.map_tolerances.fragment = 0.1;
   t.executive.robot_radius = 0.2;
   return t;
 }

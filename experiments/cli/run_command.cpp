@@ -1,0 +1,124 @@
+// rearm run SCENARIO.yaml: one run of a scenario in the Box2D world (issue 6), with its metrics,
+// figure and animation.
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "command.h"
+#include "core/error.h"
+#include "core/file_io.h"
+#include "experiment/run_scenario.h"
+#include "python_plot.h"
+#include "scenario/scenario_io.h"
+
+namespace rearm::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr const char* kUsage =
+    "usage: rearm run SCENARIO.yaml [--out DIR] [--seed N] [--plant box2d|kinematic]\n"
+    "                 [--stride N] [--no-plot] [--no-animation]\n\n"
+    "Runs the scenario's LTL task: mission controller, interface layer (LTL and Fix modes),\n"
+    "topology check and reactive controller, in a Box2D world (or on the kinematic plant).\n"
+    "Writes DIR/metrics.json (status, collisions, times, actions, path lengths, ...),\n"
+    "DIR/trajectory.json, the figure DIR/run.png and the animation DIR/run.gif (drawn by\n"
+    "experiments/plot/run.py with python3, matplotlib and pillow; skipped with a warning\n"
+    "when they are missing). DIR defaults to out/<scenario name>.\n"
+    "  --seed N        recorded in the metrics (a fixed scenario draws no random number)\n"
+    "  --stride N      steps between trajectory samples (default 10)\n"
+    "Exit: 0 when the task completed, 1 when it ended infeasible, stuck or by timeout,\n"
+    "2 for bad usage or an invalid scenario.\n";
+
+std::uint64_t parse_uint(const std::string& flag, const std::string& v) {
+  if (v.empty() || v.size() > 19 || v.find_first_not_of("0123456789") != std::string::npos) {
+    throw Error(flag + " expects a non-negative integer, got '" + v + "'");
+  }
+  return std::stoull(v);
+}
+
+}  // namespace
+
+int run_run(const std::vector<std::string>& args) {
+  std::string path, out_dir;
+  experiment::RunOptions options;
+  int stride = 10;
+  bool plot = true, animation = true;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    if (a == "--help" || a == "-h") {
+      std::printf("%s", kUsage);
+      return kExitOk;
+    } else if (a == "--out") {
+      out_dir = option_value(args, i);
+    } else if (a == "--seed") {
+      options.seed = parse_uint(a, option_value(args, i));
+    } else if (a == "--stride") {
+      const std::uint64_t s = parse_uint(a, option_value(args, i));
+      if (s < 1 || s > 100000) throw Error("--stride must be in [1, 100000]");
+      stride = static_cast<int>(s);
+    } else if (a == "--plant") {
+      const std::string& v = option_value(args, i);
+      if (v == "box2d") {
+        options.plant = experiment::PlantKind::kBox2d;
+      } else if (v == "kinematic") {
+        options.plant = experiment::PlantKind::kKinematic;
+      } else {
+        throw Error("--plant expects box2d or kinematic, got '" + v + "'");
+      }
+    } else if (a == "--no-plot") {
+      plot = false;
+    } else if (a == "--no-animation") {
+      animation = false;
+    } else if (a.rfind("--", 0) == 0) {
+      throw Error("unknown option " + a + "\n" + kUsage);
+    } else if (path.empty()) {
+      path = a;
+    } else {
+      throw Error("one scenario file expected, got also '" + a + "'");
+    }
+  }
+  if (path.empty()) throw Error(std::string("missing SCENARIO.yaml\n") + kUsage);
+  const scenario::Scenario s = scenario::load_scenario(path);
+  if (out_dir.empty()) out_dir = (fs::path("out") / s.name).string();
+
+  const experiment::RunRecord r = experiment::run_scenario(s, options);
+  const fs::path metrics = fs::path(out_dir) / "metrics.json";
+  const fs::path trajectory = fs::path(out_dir) / "trajectory.json";
+  write_file_atomically(metrics.string(), experiment::metrics_json(s, r));
+  write_file_atomically(trajectory.string(), experiment::trajectory_json(s, r, stride));
+  const executive::TaskResult& t = r.result;
+  std::printf("%s: %s (%s)\n", s.name.c_str(), executive::to_string(t.status), t.reason.c_str());
+  std::printf(
+      "  %.2f s simulated in %.2f s wall (%.0fx real time), %d collisions, min clearance %.4f "
+      "m, %d Fix mode entries, %zu actions\n",
+      t.sim_time, t.wall_time, r.real_time_factor(), t.collisions, t.min_clearance,
+      t.fix_mode_entries, t.actions.size());
+  std::printf("wrote %s and %s\n", metrics.string().c_str(), trajectory.string().c_str());
+
+  if (plot) {
+    const std::string py = find_python({"matplotlib", "PIL"});
+    const fs::path script = plot_script("run.py");
+    if (py.empty()) {
+      std::fprintf(stderr,
+                   "rearm run: warning: no python3 with matplotlib and pillow found; the figure "
+                   "and the animation were not drawn (the JSON files are written)\n");
+    } else if (!fs::exists(script)) {
+      std::fprintf(stderr, "rearm run: warning: plotting script %s not found\n",
+                   script.string().c_str());
+    } else {
+      std::string cmd = shell_quote(py) + " " + shell_quote(script.string()) + " " +
+                        shell_quote(trajectory.string()) + " " + shell_quote(out_dir);
+      if (!animation) cmd += " --no-animation";
+      if (std::system(cmd.c_str()) != 0) {
+        std::fprintf(stderr, "rearm run: plotting failed: %s\n", cmd.c_str());
+        return kExitFailure;
+      }
+    }
+  }
+  return t.status == executive::TaskStatus::kCompleted ? kExitOk : kExitFailure;
+}
+
+}  // namespace rearm::cli

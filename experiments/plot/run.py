@@ -1,0 +1,174 @@
+#!/usr/bin/env python3
+"""Figure and animation of one `rearm run` in the paper's style (Figs. 3-5).
+
+usage: run.py TRAJECTORY.json OUT_DIR [--no-animation] [--frames N]
+
+Writes OUT_DIR/run.png: the workspace, familiar obstacles (dark grey, black once localized),
+unknown obstacles (light grey), regions of interest, the objects at start (dashed) and end
+(filled), and the robot's and objects' paths. Unless --no-animation, also OUT_DIR/run.gif: the
+same scene over time (at most N frames, default 200), familiar obstacles turning black when
+localized, with the current action (Fix-mode actions marked *).
+"""
+import json
+import math
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+from matplotlib.animation import FuncAnimation, PillowWriter  # noqa: E402
+from matplotlib.patches import Circle, Polygon  # noqa: E402
+
+DARK_GREY = "#555555"
+LIGHT_GREY = "#c8c8c8"
+ROBOT = "#1f5fbf"
+OBJECT_COLORS = ["#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#e377c2", "#17becf"]
+REGION_COLORS = ["#ffd54f", "#81d4fa", "#a5d6a7", "#f48fb1", "#ce93d8", "#ffcc80"]
+
+
+def load(path):
+    with open(path) as f:
+        return json.load(f)
+
+
+def draw_static(ax, t, localized):
+    ws = t["workspace"]
+    ax.add_patch(Polygon(ws, closed=True, fill=False, edgecolor="black", linewidth=1.5))
+    for i, r in enumerate(t["regions"]):
+        c = REGION_COLORS[i % len(REGION_COLORS)]
+        ax.add_patch(Polygon(r["polygon"], closed=True, facecolor=c, alpha=0.55, edgecolor=c))
+        xs = [p[0] for p in r["polygon"]]
+        ys = [p[1] for p in r["polygon"]]
+        ax.text(min(xs) + 0.05, max(ys) - 0.05, r["name"], ha="left", va="top", fontsize=9,
+                style="italic")
+    patches = []
+    for f in t["familiar"]:
+        color = "black" if localized(f) else DARK_GREY
+        p = Polygon(f["polygon"], closed=True, facecolor=color, edgecolor=color)
+        ax.add_patch(p)
+        patches.append((f, p))
+    for u in t["unknown"]:
+        ax.add_patch(Polygon(u["polygon"], closed=True, facecolor=LIGHT_GREY, edgecolor="grey"))
+    xs = [p[0] for p in ws]
+    ys = [p[1] for p in ws]
+    pad = 0.2
+    ax.set_xlim(min(xs) - pad, max(xs) + pad)
+    ax.set_ylim(min(ys) - pad, max(ys) + pad)
+    ax.set_aspect("equal")
+    ax.set_axis_off()
+    return patches
+
+
+def figure(t, out_dir):
+    fig, ax = plt.subplots(figsize=(8, 8 * aspect(t)))
+    draw_static(ax, t, lambda f: f["localized_at"] >= 0)
+    robot = t["robot"]
+    ax.plot([p[0] for p in robot], [p[1] for p in robot], color=ROBOT, linewidth=1.2,
+            label="robot")
+    for i, (o, path) in enumerate(zip(t["objects"], t["object_paths"])):
+        c = OBJECT_COLORS[i % len(OBJECT_COLORS)]
+        ax.plot([p[0] for p in path], [p[1] for p in path], color=c, linewidth=1.0,
+                linestyle="--")
+        ax.add_patch(Circle(path[0], o["radius"], fill=False, edgecolor=c, linestyle="--"))
+        ax.add_patch(Circle(path[-1], o["radius"], facecolor=c, edgecolor=c, alpha=0.85))
+        ax.text(path[-1][0], path[-1][1], o["name"], ha="center", va="center", fontsize=8,
+                color="white", weight="bold")
+    x, y, psi = robot[-1]
+    r = t["robot_radius"]
+    ax.add_patch(Circle((x, y), r, facecolor=ROBOT, edgecolor="black", alpha=0.9))
+    ax.plot([x, x + r * math.cos(psi)], [y, y + r * math.sin(psi)], color="white")
+    ax.plot(robot[0][0], robot[0][1], marker="o", color=ROBOT, markersize=4)
+    ax.set_title(f"{t['scenario']}: {t['status']}\n{t['task']}", fontsize=9)
+    fig.tight_layout()
+    path = os.path.join(out_dir, "run.png")
+    fig.savefig(path, dpi=150)
+    plt.close(fig)
+    print(f"wrote {path}")
+
+
+def aspect(t):
+    xs = [p[0] for p in t["workspace"]]
+    ys = [p[1] for p in t["workspace"]]
+    return (max(ys) - min(ys)) / max(1e-9, (max(xs) - min(xs)))
+
+
+def action_at(t, time):
+    for a in t["actions"]:
+        if a["t_start"] <= time <= a["t_end"]:
+            return a["action"] + ("*" if a["fix_mode"] else "")
+    return ""
+
+
+def animation(t, out_dir, max_frames):
+    robot = t["robot"]
+    n = len(robot)
+    step = max(1, math.ceil(n / max_frames))
+    frames = list(range(0, n, step))
+    if frames[-1] != n - 1:
+        frames.append(n - 1)
+    dt = t["dt"]
+    fig, ax = plt.subplots(figsize=(6, 6 * aspect(t)))
+    patches = draw_static(ax, t, lambda f: False)
+    r = t["robot_radius"]
+    trail, = ax.plot([], [], color=ROBOT, linewidth=1.0)
+    body = Circle(robot[0][:2], r, facecolor=ROBOT, edgecolor="black")
+    ax.add_patch(body)
+    nose, = ax.plot([], [], color="white")
+    objs = []
+    for i, o in enumerate(t["objects"]):
+        c = OBJECT_COLORS[i % len(OBJECT_COLORS)]
+        circle = Circle(t["object_paths"][i][0], o["radius"], facecolor=c, edgecolor=c)
+        ax.add_patch(circle)
+        objs.append(circle)
+    label = ax.text(0.01, 0.99, "", transform=ax.transAxes, ha="left", va="top", fontsize=8,
+                    bbox=dict(facecolor="white", alpha=0.7, edgecolor="none"))
+    ax.set_title(f"{t['scenario']}: {t['task']}", fontsize=8)
+
+    def update(k):
+        time = k * dt
+        for f, p in patches:
+            loc = f["localized_at"]
+            color = "black" if 0 <= loc <= time else DARK_GREY
+            p.set_facecolor(color)
+            p.set_edgecolor(color)
+        trail.set_data([p[0] for p in robot[: k + 1]], [p[1] for p in robot[: k + 1]])
+        x, y, psi = robot[k]
+        body.center = (x, y)
+        nose.set_data([x, x + r * math.cos(psi)], [y, y + r * math.sin(psi)])
+        for circle, path in zip(objs, t["object_paths"]):
+            circle.center = path[min(k, len(path) - 1)]
+        label.set_text(f"t = {time:6.1f} s  {action_at(t, time)}")
+        return []
+
+    anim = FuncAnimation(fig, update, frames=frames, blit=False)
+    path = os.path.join(out_dir, "run.gif")
+    anim.save(path, writer=PillowWriter(fps=20), dpi=80)
+    plt.close(fig)
+    print(f"wrote {path}")
+
+
+def main(argv):
+    args = [a for a in argv[1:] if not a.startswith("--")]
+    flags = [a for a in argv[1:] if a.startswith("--")]
+    if len(args) != 2:
+        sys.stderr.write(__doc__)
+        return 2
+    max_frames = 200
+    for f in flags:
+        if f.startswith("--frames="):
+            max_frames = int(f.split("=", 1)[1])
+        elif f != "--no-animation":
+            sys.stderr.write(f"run.py: unknown option {f}\n")
+            return 2
+    t = load(args[0])
+    os.makedirs(args[1], exist_ok=True)
+    figure(t, args[1])
+    if "--no-animation" not in flags and t["robot"]:
+        animation(t, args[1], max_frames)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))

@@ -1,0 +1,59 @@
+#include "experiment/task_from_scenario.h"
+
+#include "ltl/parser.h"
+#include "scenario/scenario_io.h"
+#include "symbolic/mission_controller.h"
+
+namespace rearm::experiment {
+
+void check_task(const scenario::Scenario& s) {
+  symbolic::Vocabulary v;
+  for (const auto& o : s.objects) v.objects.push_back(o.name);
+  for (const auto& r : s.regions) v.regions.push_back(r.name);
+  try {
+    symbolic::check_mission_formula(ltl::parse(s.task), v);
+  } catch (const scenario::ScenarioError&) {
+    throw;
+  } catch (const Error& e) {
+    throw scenario::ScenarioError(s.source.empty() ? s.name : s.source, "task", e.what());
+  }
+}
+
+perception::World world_of(const scenario::Scenario& s) {
+  perception::World w;
+  w.workspace = s.workspace;
+  for (const auto& f : s.familiar) w.familiar.push_back({f.name, f.polygon});
+  for (const auto& u : s.unknown) w.unknown.push_back({u.name, u.polygon});
+  for (const auto& o : s.objects) w.movable.push_back({o.name, o.disk});
+  return w;
+}
+
+executive::Pose start_pose(const scenario::Scenario& s) {
+  return executive::Pose{s.robot.start, s.robot.heading};
+}
+
+executive::TaskSpec task_spec(const scenario::Scenario& s) {
+  check_task(s);
+  executive::TaskSpec t;
+  t.world = world_of(s);
+  for (const auto& r : s.regions) t.regions.push_back({r.name, r.polygon});
+  t.formula = s.task;
+  t.sensor.range = s.robot.sensor_range;
+  t.map_tolerances.fragment = s.controller.fragment_tolerance;
+  executive::ExecutiveParams& e = t.executive;
+  e.robot_radius = s.robot.radius;
+  e.diffeo.p = s.controller.p;
+  e.diffeo.epsilon = s.controller.epsilon;
+  e.diffeo.mu1 = s.controller.mu1;
+  e.diffeo.mu2 = s.controller.mu2;
+  e.nav.k_v = s.controller.k_v;
+  e.nav.k_omega = s.controller.k_omega;
+  e.nav.v_max = s.robot.v_max;
+  e.nav.omega_max = s.robot.omega_max;
+  e.nav.sensing_range = s.robot.sensor_range;
+  e.goal_tolerance = s.controller.goal_tolerance;
+  e.max_ltl_actions = s.simulation.max_actions;
+  return t;
+}
+
+}  // namespace rearm::experiment
