@@ -24,6 +24,7 @@ ASAN_TESTS+=";diffeomorphism_test;degenerate_input_test;mapped_space_test;local_
 ASAN_TESTS+=";navigation_test"
 ASAN_TESTS+=";grasp_test;kinematics_test;closed_loop_test;topology_check_test;topology_property_test"
 ASAN_TESTS+=";progress_monitor_test;kinematic_plant_test;interface_layer_test;executive_test;end_to_end_test"
+ASAN_TESTS+=";scenario_io_test;convex_pieces_test;sim_world_test;json_writer_test;file_io_test;run_scenario_test"
 cmake -S . -B "$ASAN_BUILD" -DCMAKE_BUILD_TYPE=Debug -DREARM_SANITIZE=ON -DREARM_WERROR=ON \
   -DREARM_BUILD_TESTS=ON -DREARM_BUILD_BENCH=OFF "-DREARM_TESTS=$ASAN_TESTS"
 cmake --build "$ASAN_BUILD" -j"$JOBS"

@@ -257,12 +257,12 @@ std::string slurp(const std::string& path) {
 }
 
 // The command looks for a python3 with matplotlib the same way.
-bool have_matplotlib() {
+bool have_python_modules(const std::string& imports) {
   const char* env = std::getenv("REARM_PYTHON");
   for (const std::string& py :
        {std::string(env ? env : ""), std::string("python3"), std::string("/usr/bin/python3")}) {
     if (py.empty()) continue;
-    if (std::system(("'" + py + "' -c 'import matplotlib' > /dev/null 2>&1").c_str()) == 0) {
+    if (std::system(("'" + py + "' -c '" + imports + "' > /dev/null 2>&1").c_str()) == 0) {
       return true;
     }
   }
@@ -284,7 +284,7 @@ TEST(CliTest, DiffeoWritesTheJsonAndThePlots) {
     EXPECT_TRUE(contains(json, key)) << key;
   }
   EXPECT_FALSE(contains(json, "null,")) << "a non-finite number was written";
-  const bool plots = have_matplotlib();
+  const bool plots = have_python_modules("import matplotlib");
   for (const char* png : {"semantic.png", "mapped.png", "model.png", "path.png"}) {
     EXPECT_EQ(std::filesystem::exists(dir + "/" + png), plots) << png;
   }
@@ -359,6 +359,57 @@ TEST(CliTest, DiffeoRejectsBadScenesNamingTheProblem) {
     EXPECT_EQ(r.code, 2) << c.text << r.out;
     EXPECT_TRUE(contains(r.out, c.message)) << c.text << "\n--- got:\n" << r.out;
   }
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+
+namespace {
+
+TEST(CliTest, RunWritesMetricsFigureAndAnimation) {
+  const std::string dir = temp_dir();
+  const Result r = run("run experiments/scenarios/fig3.yaml --seed 3 --stride 20 --out " + dir);
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_TRUE(contains(r.out, "fig3: completed")) << r.out;
+  const std::string metrics = slurp(dir + "/metrics.json");
+  EXPECT_TRUE(JsonChecker(metrics).ok());
+  for (const char* key : {"\"status\": \"completed\"", "\"seed\": 3", "\"plant\": \"box2d\"",
+                          "\"action\": \"disassemble(M1)\"", "\"fix_mode\": true"}) {
+    EXPECT_TRUE(contains(metrics, key)) << key;
+  }
+  EXPECT_TRUE(JsonChecker(slurp(dir + "/trajectory.json")).ok());
+  const bool plots = have_python_modules("import matplotlib; import PIL");
+  EXPECT_EQ(std::filesystem::exists(dir + "/run.png"), plots);
+  EXPECT_EQ(std::filesystem::exists(dir + "/run.gif"), plots);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(CliTest, RunRejectsBadScenariosAndUsage) {
+  const std::string dir = temp_dir();
+  const std::string bad = dir + "/bad.yaml";
+  std::ofstream(bad) << "name: bad\nworkspace: [[0,0],[4,0],[4,4],[0,4]]\n"
+                        "robot: {radius: -0.2, start: [1, 1]}\ntask: \"<>move(l1)\"\n";
+  const Result neg = run("run " + bad + " --out " + dir);
+  EXPECT_EQ(neg.code, 2);
+  EXPECT_TRUE(contains(neg.out, "bad.yaml")) << neg.out;
+  EXPECT_TRUE(contains(neg.out, "robot.radius")) << neg.out;
+  const std::string unknown_name = dir + "/unknown.yaml";
+  std::ofstream(unknown_name) << "name: u\nworkspace: [[0,0],[4,0],[4,4],[0,4]]\n"
+                                 "robot: {radius: 0.2, start: [1, 1]}\n"
+                                 "regions:\n  - {name: l1, polygon: [[2,2],[3,2],[3,3],[2,3]]}\n"
+                                 "task: \"<>move(l7)\"\n";
+  const Result un = run("run " + unknown_name + " --out " + dir);
+  EXPECT_EQ(un.code, 2);
+  EXPECT_TRUE(contains(un.out, "task")) << un.out;
+  EXPECT_TRUE(contains(un.out, "l7")) << un.out;
+  EXPECT_EQ(run("run").code, 2);
+  EXPECT_EQ(run("run experiments/scenarios/fig3.yaml --plant tank").code, 2);
+  EXPECT_EQ(run("run experiments/scenarios/fig3.yaml --stride 0").code, 2);
+  EXPECT_EQ(run("run experiments/scenarios/fig3.yaml --frobnicate").code, 2);
+  const Result missing = run("run no/such.yaml");
+  EXPECT_EQ(missing.code, 2);
+  EXPECT_TRUE(contains(missing.out, "no/such.yaml")) << missing.out;
+  EXPECT_TRUE(contains(run("run --help").out, "metrics.json"));
   std::filesystem::remove_all(dir);
 }
 
