@@ -498,9 +498,10 @@ Executive::Advance Executive::plan(Activity& a, const Pose& pose) {
   if (a.kind == Kind::kDisassemble) {
     // Paper §V-B: x* is the midpoint of an edge of the pair's freespace F; kept while it stays
     // in F so the target does not jump as the map grows.
-    topology::TopologyInput in = topology::make_input(map_.workspace(), map_.familiar(),
-                                                      map_.movable(), radius, center, center);
-    const topology::TopologyResult res = topology::check_topology(in);
+    const topology::TopologyInput in =
+        topology::make_input(map_.workspace(), map_.familiar(), map_.movable(), radius, center,
+                             center, std::nullopt, topology_cache_);
+    const topology::TopologyResult res = topology::check_topology(in, topology_cache_);
     ++topology_checks_;
     if (!a.target || !geometry::contains(res.freespace, *a.target)) {
       a.target = disassemble_target(res.freespace, map_, a.object, regions_, radius);
@@ -515,9 +516,10 @@ Executive::Advance Executive::plan(Activity& a, const Pose& pose) {
   }
 
   const Point target = region_target(region(a.region));
-  topology::TopologyInput in = topology::make_input(map_.workspace(), map_.familiar(),
-                                                    map_.movable(), radius, center, target);
-  const topology::TopologyResult res = topology::check_topology(in);
+  const topology::TopologyInput in =
+      topology::make_input(map_.workspace(), map_.familiar(), map_.movable(), radius, center,
+                           target, std::nullopt, topology_cache_);
+  const topology::TopologyResult res = topology::check_topology(in, topology_cache_);
   ++topology_checks_;
   a.target = target;
   switch (res.verdict) {
@@ -556,25 +558,17 @@ Executive::Advance Executive::plan_grasp(Activity& a, const Pose& pose) {
 
   // Exact freespaces: the robot's (every object an obstacle) and the pair's once gripped (the
   // object carried, radius r + ρ_i + pair_margin).
-  const geometry::RegionSet robot_free = freespace_of(
-      topology::make_input(map_.workspace(), map_.familiar(), map_.movable(), r, pose.x, pose.x));
-  const geometry::Region* f = nullptr;
-  for (const geometry::Region& c : robot_free) {
-    if (geometry::contains(c, pose.x)) {
-      f = &c;
-      break;
-    }
-  }
-  if (f == nullptr) {
-    out.kind = Advance::kStuck;
-    out.reason = "the robot " + point_text(pose.x) + " is not in its freespace";
-    return out;
-  }
+  // F from the topology check with x* = x (throws when the robot is not in its freespace).
+  const topology::TopologyResult here = topology::check_topology(
+      topology::make_input(map_.workspace(), map_.familiar(), map_.movable(), r, pose.x, pose.x,
+                           std::nullopt, topology_cache_),
+      topology_cache_);
+  const geometry::Region* f = &here.freespace;
   const Point c = map_.movable()[index].center;
-  const geometry::RegionSet pair_free =
-      freespace_of(topology::make_input(map_.workspace(), map_.familiar(), map_.movable(),
-                                        r + rho + p_.grasp.pair_margin, c, c, index));
-  ++topology_checks_;
+  const geometry::RegionSet pair_free = freespace_of(
+      topology::make_input(map_.workspace(), map_.familiar(), map_.movable(),
+                           r + rho + p_.grasp.pair_margin, c, c, index, topology_cache_));
+  topology_checks_ += 2;
   const GraspCandidate* reachable = nullptr;
   const GraspCandidate* fallback = nullptr;
   for (const GraspCandidate& g : candidates) {
@@ -593,8 +587,10 @@ Executive::Advance Executive::plan_grasp(Activity& a, const Pose& pose) {
   a.target = (reachable != nullptr ? reachable : fallback)->approach;
   if (reachable == nullptr) {
     // Paper §IV: the approach point is not in F; the topology check says why.
-    const topology::TopologyResult res = topology::check_topology(topology::make_input(
-        map_.workspace(), map_.familiar(), map_.movable(), r, pose.x, *a.target));
+    const topology::TopologyResult res = topology::check_topology(
+        topology::make_input(map_.workspace(), map_.familiar(), map_.movable(), r, pose.x,
+                             *a.target, std::nullopt, topology_cache_),
+        topology_cache_);
     ++topology_checks_;
     if (res.verdict == topology::Verdict::kBlockedByFixed) {
       out.kind = Advance::kInfeasible;

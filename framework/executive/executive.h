@@ -39,6 +39,7 @@
 #include "reactive/params.h"
 #include "reactive/reactive_controller.h"
 #include "symbolic/mission_controller.h"
+#include "topology/topology_check.h"
 
 namespace rearm::executive {
 
@@ -184,6 +185,9 @@ class Executive {
   symbolic::MissionController& mission_;
   const perception::SemanticMap& map_;
   reactive::ReactiveController controller_;
+  // Workspace erosions, obstacle dilations and bound − ∪fixed, kept across topology checks (they
+  // change only when a familiar obstacle is localized or the radius changes).
+  topology::TopologyCache topology_cache_;
   std::optional<Activity> ltl_;  // the current LTL action (suspended while fix_ is not empty)
   std::vector<Activity> fix_;    // Fix-mode actions, back() runs first
   int fix_rounds_ = 0;           // Fix mode entries for the current LTL action

@@ -4,9 +4,12 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <deque>
 #include <limits>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -15,6 +18,7 @@
 #include "geometry/boolean.h"
 #include "geometry/dilation.h"
 #include "geometry/distance.h"
+#include "topology/freespace.h"
 
 namespace rearm::topology {
 namespace {
@@ -71,25 +75,30 @@ std::vector<std::size_t> blocking_stack(const TopologyInput& in, const RegionSet
                                         std::size_t root, const Region& c, double slack,
                                         std::string& note) {
   const std::size_t n_free = components.size();
-  // The clusters: components of the union of the (slightly grown) objects, clipped to C.
-  RegionSet grown_objects;
+  // The clusters: components of the union of the (slightly grown) objects, clipped to C
+  // (localized: freespace.h).
+  std::vector<Polygon> grown_objects;
   grown_objects.reserve(in.movable.size());
-  for (const Polygon& p : in.movable) grown_objects.push_back(Region{grown(p, slack), {}});
-  const RegionSet clusters = geometry::intersect(grown_objects, RegionSet{c});
+  for (const Polygon& p : in.movable) grown_objects.push_back(grown(p, slack));
+  const detail::Clusters clusters = detail::clip_union(grown_objects, c);
+  const std::size_t n_clusters = clusters.regions.size();
 
   std::vector<Region> vertices(components.begin(), components.end());
-  vertices.insert(vertices.end(), clusters.begin(), clusters.end());
+  vertices.insert(vertices.end(), clusters.regions.begin(), clusters.regions.end());
   std::vector<Box> boxes;
   boxes.reserve(vertices.size());
   for (const Region& r : vertices) boxes.push_back(box_of(r.outer));
 
-  // Objects of each cluster, farthest from x first (pushed in this order, nearest on top).
-  std::vector<std::vector<std::size_t>> members(clusters.size());
-  for (std::size_t j = 0; j < clusters.size(); ++j) {
+  // Objects of each cluster, farthest from x first (pushed in this order, nearest on top). Only
+  // the candidates can touch a cluster (the others' boxes miss it); a cluster that is one
+  // isolated grown object touches its own object only.
+  std::vector<std::vector<std::size_t>> members(n_clusters);
+  for (std::size_t j = 0; j < n_clusters; ++j) {
     std::vector<std::pair<double, std::size_t>> order;
-    for (std::size_t k = 0; k < in.movable.size(); ++k) {
+    for (std::size_t k : clusters.candidates[j]) {
       const Region object{in.movable[k], {}};
-      if (touch(object, box_of(in.movable[k]), vertices[n_free + j], boxes[n_free + j])) {
+      if (clusters.sole[j] ||
+          touch(object, box_of(in.movable[k]), vertices[n_free + j], boxes[n_free + j])) {
         order.emplace_back(geometry::distance(in.movable[k], in.x), k);
       }
     }
@@ -131,9 +140,13 @@ std::vector<std::size_t> blocking_stack(const TopologyInput& in, const RegionSet
     }
   };
   for (std::size_t i = 0; i < n_free; ++i) {
+    std::vector<bool> linked(vertices.size(), false);  // a linked pair needs no more probes
     auto probe = [&](const Point& q) {
       for (std::size_t v = n_free; v < vertices.size(); ++v) {
-        if (boxes[v].exteriorDistance(q) == 0 && geometry::contains(vertices[v], q)) link(i, v);
+        if (!linked[v] && boxes[v].exteriorDistance(q) == 0 && geometry::contains(vertices[v], q)) {
+          link(i, v);
+          linked[v] = true;
+        }
       }
     };
     auto probe_loop = [&](const Polygon& loop) {
@@ -222,7 +235,123 @@ const char* to_string(Verdict v) {
   return "unknown verdict";
 }
 
-TopologyResult check_topology(const TopologyInput& raw) {
+// --- TopologyCache ---
+
+namespace {
+
+bool same_bits(const Polygon& a, const Polygon& b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    for (int k = 0; k < 2; ++k) {
+      if (std::bit_cast<std::uint64_t>(a.vertices[i][k]) !=
+          std::bit_cast<std::uint64_t>(b.vertices[i][k])) {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+bool same_bits(const RegionSet& a, const RegionSet& b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    if (!same_bits(a[i].outer, b[i].outer) || a[i].holes.size() != b[i].holes.size()) return false;
+    for (std::size_t k = 0; k < a[i].holes.size(); ++k) {
+      if (!same_bits(a[i].holes[k], b[i].holes[k])) return false;
+    }
+  }
+  return true;
+}
+
+bool same_bits(const std::vector<RegionSet>& a, const std::vector<RegionSet>& b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    if (!same_bits(a[i], b[i])) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+struct TopologyCache::Impl {
+  struct Freespace {
+    RegionSet bound;  // the key: the caller's polygons, as given
+    std::vector<RegionSet> fixed;
+    std::shared_ptr<const detail::ExactFreespace> set;
+  };
+  std::vector<Freespace> freespaces;  // least recently used first
+
+  struct Dilation {
+    Polygon polygon;  // the key: the caller's polygon, as given
+    double radius;
+    bool erosion;  // workspace erosion (else a familiar polygon's miter dilation)
+    RegionSet result;
+  };
+  std::vector<Dilation> dilations;
+
+  // bound − ∪fixed; on a miss the input is validated (the same errors as before) and the set
+  // built.
+  std::shared_ptr<const detail::ExactFreespace> freespace(const RegionSet& bound,
+                                                          const std::vector<RegionSet>& fixed) {
+    for (std::size_t e = 0; e < freespaces.size(); ++e) {
+      if (same_bits(freespaces[e].bound, bound) && same_bits(freespaces[e].fixed, fixed)) {
+        std::rotate(freespaces.begin() + static_cast<std::ptrdiff_t>(e),
+                    freespaces.begin() + static_cast<std::ptrdiff_t>(e) + 1, freespaces.end());
+        return freespaces.back().set;
+      }
+    }
+    RegionSet valid_bound;
+    for (std::size_t i = 0; i < bound.size(); ++i) {
+      valid_bound.push_back(
+          validated_region(bound[i], "topology: bound region " + std::to_string(i)));
+    }
+    RegionSet valid_fixed;
+    for (std::size_t i = 0; i < fixed.size(); ++i) {
+      for (std::size_t k = 0; k < fixed[i].size(); ++k) {
+        valid_fixed.push_back(validated_region(
+            fixed[i][k],
+            "topology: fixed obstacle " + std::to_string(i) + " region " + std::to_string(k)));
+      }
+    }
+    auto set = std::make_shared<const detail::ExactFreespace>(valid_bound, valid_fixed);
+    if (freespaces.size() >= kTopologyCacheFreespaces) freespaces.erase(freespaces.begin());
+    freespaces.push_back(Freespace{bound, fixed, set});
+    return set;
+  }
+
+  // geometry::erode(p, r) or geometry::dilate_miter(validated p, r), computed once per key.
+  const RegionSet& dilation(const Polygon& p, double r, bool erosion, const std::string& what) {
+    for (const Dilation& d : dilations) {
+      if (d.erosion == erosion &&
+          std::bit_cast<std::uint64_t>(d.radius) == std::bit_cast<std::uint64_t>(r) &&
+          same_bits(d.polygon, p)) {
+        return d.result;
+      }
+    }
+    RegionSet result = erosion ? geometry::erode(p, r)
+                               : geometry::dilate_miter(geometry::validated(p, what.c_str()), r);
+    if (dilations.size() >= kTopologyCacheDilations) dilations.clear();
+    dilations.push_back(Dilation{p, r, erosion, std::move(result)});
+    return dilations.back().result;
+  }
+};
+
+TopologyCache::TopologyCache() : impl_(std::make_unique<Impl>()) {}
+TopologyCache::~TopologyCache() = default;
+TopologyCache::TopologyCache(TopologyCache&&) noexcept = default;
+TopologyCache& TopologyCache::operator=(TopologyCache&&) noexcept = default;
+std::size_t TopologyCache::freespaces() const { return impl_ ? impl_->freespaces.size() : 0; }
+std::size_t TopologyCache::dilations() const { return impl_ ? impl_->dilations.size() : 0; }
+void TopologyCache::clear() { impl_ = std::make_unique<Impl>(); }
+
+// --- The check ---
+
+TopologyResult check_topology(const TopologyInput& in) {
+  TopologyCache fresh;
+  return check_topology(in, fresh);
+}
+
+TopologyResult check_topology(const TopologyInput& raw, TopologyCache& cache) {
   check_point(raw.x, "robot position x");
   check_point(raw.target, "target x*");
   if (raw.bound.empty()) throw Error("topology: the bound (initial freespace) is empty");
@@ -230,32 +359,22 @@ TopologyResult check_topology(const TopologyInput& raw) {
     throw Error("topology: " + std::to_string(raw.movable_ids.size()) + " movable ids for " +
                 std::to_string(raw.movable.size()) + " movable objects");
   }
+  if (!cache.impl_) cache.impl_ = std::make_unique<TopologyCache::Impl>();  // moved from
+  // bound − ∪fixed (bound and fixed validated when first seen).
+  const std::shared_ptr<const detail::ExactFreespace> fixed_free =
+      cache.impl_->freespace(raw.bound, raw.fixed);
   TopologyInput in;
   in.x = raw.x;
   in.target = raw.target;
-  for (std::size_t i = 0; i < raw.bound.size(); ++i) {
-    in.bound.push_back(
-        validated_region(raw.bound[i], "topology: bound region " + std::to_string(i)));
-  }
-  RegionSet fixed;
-  for (std::size_t i = 0; i < raw.fixed.size(); ++i) {
-    for (std::size_t k = 0; k < raw.fixed[i].size(); ++k) {
-      fixed.push_back(validated_region(
-          raw.fixed[i][k],
-          "topology: fixed obstacle " + std::to_string(i) + " region " + std::to_string(k)));
-    }
-  }
   for (std::size_t i = 0; i < raw.movable.size(); ++i) {
     const std::string what = "topology: movable object " + std::to_string(i);
     in.movable.push_back(geometry::validated(raw.movable[i], what.c_str()));
   }
   auto id = [&raw](std::size_t k) { return raw.movable_ids.empty() ? k : raw.movable_ids[k]; };
 
-  // Step 1: F_list, F and F_e (overlapping obstacles are united inside subtract).
-  RegionSet obstacles = fixed;
-  for (const Polygon& p : in.movable) obstacles.push_back(Region{p, {}});
+  // Step 1: F_list = (bound − ∪fixed) − ∪movable, F and F_e.
   TopologyResult out;
-  out.components = geometry::subtract(in.bound, obstacles);
+  out.components = fixed_free->subtract(in.movable);
   std::size_t root = out.components.size();
   for (std::size_t i = 0; i < out.components.size() && root == out.components.size(); ++i) {
     if (geometry::contains(out.components[i], in.x)) root = i;
@@ -275,7 +394,7 @@ TopologyResult check_topology(const TopologyInput& raw) {
   }
 
   // Step 3: components of bound − ∪fixed (the movable objects treated as free).
-  const RegionSet without_objects = geometry::subtract(in.bound, fixed);
+  const RegionSet& without_objects = fixed_free->components();
   const Region* c = nullptr;
   for (const Region& r : without_objects) {
     if (geometry::contains(r, in.x)) {
@@ -299,7 +418,7 @@ TopologyResult check_topology(const TopologyInput& raw) {
 
   // Step 4.
   Box extent;
-  for (const Region& r : in.bound) extent.extend(box_of(r.outer));
+  for (const Region& r : raw.bound) extent.extend(box_of(r.outer));
   const double slack = kAdjacencySlack * extent.diagonal().norm();
   std::string note;
   std::vector<std::size_t> stack = blocking_stack(in, out.components, root, *c, slack, note);
@@ -327,6 +446,15 @@ TopologyInput make_input(const geometry::Polygon& workspace,
                          const std::vector<geometry::Disk>& objects, double radius,
                          geometry::Point x, geometry::Point target,
                          std::optional<std::size_t> carried) {
+  TopologyCache fresh;
+  return make_input(workspace, familiar, objects, radius, x, target, carried, fresh);
+}
+
+TopologyInput make_input(const geometry::Polygon& workspace,
+                         const std::vector<geometry::Polygon>& familiar,
+                         const std::vector<geometry::Disk>& objects, double radius,
+                         geometry::Point x, geometry::Point target,
+                         std::optional<std::size_t> carried, TopologyCache& cache) {
   if (!std::isfinite(radius) || !(radius > 0)) {
     throw Error("topology: dilation radius must be finite and > 0, got " + std::to_string(radius));
   }
@@ -336,14 +464,15 @@ TopologyInput make_input(const geometry::Polygon& workspace,
     throw Error("topology: carried object " + std::to_string(*carried) + " of " +
                 std::to_string(objects.size()));
   }
+  if (!cache.impl_) cache.impl_ = std::make_unique<TopologyCache::Impl>();  // moved from
   const double r = radius + geometry::kContactSlack;
   TopologyInput in;
   in.x = x;
   in.target = target;
-  in.bound = geometry::erode(workspace, r);
+  in.bound = cache.impl_->dilation(workspace, r, true, "workspace");
   for (std::size_t i = 0; i < familiar.size(); ++i) {
     const std::string what = "topology: familiar obstacle " + std::to_string(i);
-    in.fixed.push_back(geometry::dilate_miter(geometry::validated(familiar[i], what.c_str()), r));
+    in.fixed.push_back(cache.impl_->dilation(familiar[i], r, false, what));
   }
   for (std::size_t i = 0; i < objects.size(); ++i) {
     const Disk& d = objects[i];

@@ -36,9 +36,22 @@
 //     rounded pieces do not link F to x*, B_M lists every object in C (farthest first, the
 //     reason says so); when C holds no object at all, x* is a rounding hair outside F and the
 //     verdict is kReachable.
+//
+// Speed (issue 5: ≤ 1 ms at 10 objects and 20 familiar obstacles). CGAL's exact overlays cost
+// about 1 µs per input edge, so one global overlay of the bound, the obstacles and the objects
+// (~550 edges) took 2 ms. They are now kept to where shapes interact (topology/freespace.h):
+// bound − ∪fixed is computed once and kept exact (TopologyCache, below); per call an object
+// whose bounding box meets no other object's and no edge of bound − ∪fixed becomes a hole of
+// the component one exact point location names, without any overlay, and the other objects
+// are subtracted inside small windows around them, splicing the result into the kept loops.
+// bound − ∪fixed itself and step 4's clusters are localized the same way; steps 3–4 run only
+// when step 2 fails, and step 3 reads the kept components of bound − ∪fixed. The sets are those
+// of one global overlay (every decision still on exact Booleans and predicates); only the
+// order of the components and the first vertex of a loop can differ from it.
 #pragma once
 
 #include <cstddef>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -101,6 +114,51 @@ struct TopologyResult {
 // freespace (inside an obstacle's dilation or outside the bound).
 TopologyResult check_topology(const TopologyInput& in);
 
+// Entries a TopologyCache keeps: sets bound − ∪fixed (the robot alone and a robot–object pair
+// or two are the usual working set; the least recently used is dropped), and dilations
+// (familiar polygons, workspace erosions; emptied when full, as reactive::DilationCache).
+inline constexpr std::size_t kTopologyCacheFreespaces = 4;
+inline constexpr std::size_t kTopologyCacheDilations = 256;
+
+// What stays the same between the topology checks of one executive: the exact set
+// bound − ∪fixed of check_topology (keyed by the bound and fixed polygons, bit for bit) and the
+// dilations of make_input (familiar polygon or workspace, and radius, bit for bit). A cached
+// call returns exactly (bit for bit) what the uncached call returns for the same arguments,
+// whatever the cache held before (freespace.h: the kept exact numbers are settled when built);
+// the uncached calls are the cached ones with a fresh cache. Not thread-safe: one per executive
+// (or per thread).
+class TopologyCache {
+ public:
+  TopologyCache();
+  ~TopologyCache();
+  TopologyCache(TopologyCache&&) noexcept;
+  TopologyCache& operator=(TopologyCache&&) noexcept;
+  TopologyCache(const TopologyCache&) = delete;
+  TopologyCache& operator=(const TopologyCache&) = delete;
+
+  std::size_t freespaces() const;  // sets bound − ∪fixed held
+  std::size_t dilations() const;   // dilations and erosions held
+  void clear();
+
+  struct Impl;  // topology_check.cpp
+
+ private:
+  std::unique_ptr<Impl> impl_;
+  friend TopologyResult check_topology(const TopologyInput& in, TopologyCache& cache);
+  friend TopologyInput make_input(const geometry::Polygon& workspace,
+                                  const std::vector<geometry::Polygon>& familiar,
+                                  const std::vector<geometry::Disk>& objects, double radius,
+                                  geometry::Point x, geometry::Point target,
+                                  std::optional<std::size_t> carried, TopologyCache& cache);
+};
+
+// check_topology with bound − ∪fixed taken from (or added to) `cache`: bit for bit the result
+// and the errors of check_topology(in). A bound and fixed set seen before skip their
+// validation (they passed it then) and the Boolean bound − ∪fixed, most of a cold call when
+// dilated obstacles reach the workspace boundary or each other (~0.7 ms of 1.1–1.4 ms at 10
+// objects and 20 obstacles, carrying; results/debian12-2core/topology.md).
+TopologyResult check_topology(const TopologyInput& in, TopologyCache& cache);
+
 // Builds the input for a robot of radius `radius` (or a robot–object pair, radius r + ρ_i):
 //  - bound: the workspace (a simple polygon) eroded by radius: W minus the stadiums
 //    (circumscribed-polygon hulls) of its edges, conservative;
@@ -116,5 +174,18 @@ TopologyInput make_input(const geometry::Polygon& workspace,
                          const std::vector<geometry::Disk>& objects, double radius,
                          geometry::Point x, geometry::Point target,
                          std::optional<std::size_t> carried = std::nullopt);
+
+// make_input with the workspace erosion and the familiar dilations taken from (or added to)
+// `cache`: bit for bit the same result and the same errors. The erosion and the dilations
+// (exact Booleans) are nearly all of make_input's time, ~7 ms at 20 familiar obstacles; with
+// the cache warm, a call after the objects moved takes ~10 µs. A familiar polygon seen before
+// skips its validation (it passed it then). The bound and fixed returned are those of every
+// call with the same workspace, familiar polygons and radius (dilation is deterministic, cached
+// or not), so check_topology(…, cache) finds its bound − ∪fixed.
+TopologyInput make_input(const geometry::Polygon& workspace,
+                         const std::vector<geometry::Polygon>& familiar,
+                         const std::vector<geometry::Disk>& objects, double radius,
+                         geometry::Point x, geometry::Point target,
+                         std::optional<std::size_t> carried, TopologyCache& cache);
 
 }  // namespace rearm::topology
