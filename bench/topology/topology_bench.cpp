@@ -39,6 +39,7 @@
 #include "geometry/convex.h"
 #include "support/geometry_oracle.h"
 #include "topology/topology_check.h"
+#include "topology/topology_scenes.h"
 
 namespace {
 
@@ -48,6 +49,7 @@ using rearm::geometry::Point;
 using rearm::geometry::Polygon;
 using rearm::topology::TopologyCache;
 using rearm::topology::TopologyInput;
+using rearm::topology::test_scenes::rotated_rect;
 
 constexpr std::uint64_t kSeed = 42;
 constexpr double kCellSize = 2.5;      // m
@@ -56,16 +58,6 @@ constexpr double kObjectRadius = 0.3;  // m (also the carried object's)
 constexpr double kJitter = 0.3;        // m, of a shape, x or x* in its cell
 constexpr double kMinTime = 0.2;       // s per benchmark
 constexpr int kVariants = 8;
-
-Polygon rotated_rect(const Point& c, double w, double h, double angle) {
-  const Eigen::Rotation2Dd rot(angle);
-  Polygon p;
-  for (const Point& v :
-       {Point(-w / 2, -h / 2), Point(w / 2, -h / 2), Point(w / 2, h / 2), Point(-w / 2, h / 2)}) {
-    p.vertices.push_back(c + rot * v);
-  }
-  return p;
-}
 
 // One scene's fixed part and the cells of its objects.
 struct Layout {

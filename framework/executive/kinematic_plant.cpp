@@ -28,6 +28,9 @@ KinematicPlant::KinematicPlant(const perception::World& world, double robot_radi
   if (!start.x.allFinite() || !std::isfinite(start.psi)) {
     throw Error("kinematic plant: the start pose is not finite");
   }
+  for (const auto& f : world_.familiar) obstacles_.push_back(f.polygon);
+  for (const auto& u : world_.unknown) obstacles_.push_back(u.polygon);
+  for (const auto& m : world_.movable) disks_.push_back(m.disk);
   clearance_ = measure();
   in_contact_ = clearance_ < -kPenetrationTolerance;
 }
@@ -60,7 +63,11 @@ void KinematicPlant::release() { held_.reset(); }
 
 void KinematicPlant::step(const Twist& u, double dt) {
   pose_ = reactive::unicycle_step(pose_, u, dt);
-  if (held_) world_.movable[*held_].disk.center = pose_.x + rotate(held_offset_, pose_.psi);
+  if (held_) {
+    const Point c = pose_.x + rotate(held_offset_, pose_.psi);
+    world_.movable[*held_].disk.center = c;
+    disks_[*held_].center = c;
+  }
   clearance_ = measure();
   const bool contact = clearance_ < -kPenetrationTolerance;
   if (contact && !in_contact_) ++collisions_;
@@ -69,17 +76,7 @@ void KinematicPlant::step(const Twist& u, double dt) {
 
 double KinematicPlant::disk_clearance(const Point& c, double r,
                                       std::optional<std::size_t> skip) const {
-  double best = -geometry::signed_distance(world_.workspace, c) - r;
-  for (const auto& f : world_.familiar)
-    best = std::min(best, geometry::signed_distance(f.polygon, c) - r);
-  for (const auto& u : world_.unknown)
-    best = std::min(best, geometry::signed_distance(u.polygon, c) - r);
-  for (std::size_t i = 0; i < world_.movable.size(); ++i) {
-    if (skip && *skip == i) continue;
-    const geometry::Disk& d = world_.movable[i].disk;
-    best = std::min(best, (d.center - c).norm() - d.radius - r);
-  }
-  return best;
+  return geometry::disk_clearance(world_.workspace, obstacles_, disks_, c, r, skip);
 }
 
 double KinematicPlant::measure() const {

@@ -46,6 +46,8 @@ class KinematicPlant final : public Plant {
   double measure() const;
 
   perception::World world_;
+  std::vector<geometry::Polygon> obstacles_;  // familiar and unknown, for the clearance
+  std::vector<geometry::Disk> disks_;         // the objects' current disks, world order
   double radius_;
   Pose pose_;
   std::optional<std::size_t> held_;

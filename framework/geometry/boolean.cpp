@@ -52,32 +52,14 @@ PolygonSet to_set_exact(const RegionSet& normal) {
   return out;
 }
 
-// A CGAL boundary cycle in doubles, cut into simple loops. CGAL's boundaries are only
-// relatively simple: the union of two squares touching at a corner is one outer cycle
-// through that corner twice, which validated() would reject when the result is fed back.
-// Rounding to doubles can also merge distinct vertices. Each loop is returned with CGAL's
-// orientation (counter-clockwise loops bound material, clockwise loops bound holes);
-// consecutive duplicates and loops of fewer than 3 vertices (no area) are dropped.
-std::vector<Polygon> simple_loops(const CPolygon& cycle) {
-  std::vector<Point> path;
-  std::vector<Polygon> loops;
-  auto emit = [&loops](std::vector<Point> v) {
-    if (v.size() >= 3) loops.push_back(Polygon{std::move(v)});
-  };
+// A CGAL boundary cycle in doubles, cut into simple loops (simple_loops below).
+std::vector<Polygon> cycle_loops(const CPolygon& cycle) {
+  std::vector<Point> points;
+  points.reserve(cycle.size());
   for (auto it = cycle.vertices_begin(); it != cycle.vertices_end(); ++it) {
-    const Point v = internal::from_cgal(*it);
-    if (!path.empty() && path.back() == v) continue;
-    const auto seen = std::find(path.begin(), path.end(), v);
-    if (seen != path.end()) {
-      emit(std::vector<Point>(seen, path.end()));
-      path.erase(seen + 1, path.end());
-    } else {
-      path.push_back(v);
-    }
+    points.push_back(internal::from_cgal(*it));
   }
-  while (path.size() > 1 && path.back() == path.front()) path.pop_back();
-  emit(std::move(path));
-  return loops;
+  return simple_loops(points);
 }
 
 RegionSet from_set_exact(const PolygonSet& s) {
@@ -86,9 +68,9 @@ RegionSet from_set_exact(const PolygonSet& s) {
   RegionSet out;
   for (const CPolygonWithHoles& p : parts) {
     REARM_DEMAND(!p.is_unbounded(), "a bounded Boolean operation gave an unbounded region");
-    std::vector<Polygon> loops = simple_loops(p.outer_boundary());
+    std::vector<Polygon> loops = cycle_loops(p.outer_boundary());
     for (auto h = p.holes_begin(); h != p.holes_end(); ++h) {
-      std::vector<Polygon> more = simple_loops(*h);
+      std::vector<Polygon> more = cycle_loops(*h);
       loops.insert(loops.end(), more.begin(), more.end());
     }
     const std::size_t first = out.size();
@@ -196,6 +178,27 @@ bool intersects(const RegionSet& a, const RegionSet& b) {
     if (contains(na, r.outer.vertices.front())) return true;
   }
   return false;
+}
+
+std::vector<Polygon> simple_loops(const std::vector<Point>& cycle) {
+  std::vector<Point> path;
+  std::vector<Polygon> loops;
+  auto emit = [&loops](std::vector<Point> v) {
+    if (v.size() >= 3) loops.push_back(Polygon{std::move(v)});
+  };
+  for (const Point& v : cycle) {
+    if (!path.empty() && path.back() == v) continue;
+    const auto seen = std::find(path.begin(), path.end(), v);
+    if (seen != path.end()) {
+      emit(std::vector<Point>(seen, path.end()));
+      path.erase(seen + 1, path.end());
+    } else {
+      path.push_back(v);
+    }
+  }
+  while (path.size() > 1 && path.back() == path.front()) path.pop_back();
+  emit(std::move(path));
+  return loops;
 }
 
 }  // namespace rearm::geometry

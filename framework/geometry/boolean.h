@@ -19,4 +19,11 @@ RegionSet unite_all(const std::vector<Polygon>& polygons);
 // Do the closed sets touch or overlap (exact)?
 bool intersects(const RegionSet& a, const RegionSet& b);
 
+// A closed boundary cycle rounded to doubles, cut into simple loops. Exact Boolean boundaries
+// are only relatively simple (two squares touching at a corner give one cycle through that
+// corner twice, which validated() rejects), and rounding can merge distinct vertices. Each loop
+// keeps the cycle's orientation; consecutive duplicates and loops of fewer than 3 vertices (no
+// area) are dropped.
+std::vector<Polygon> simple_loops(const std::vector<Point>& cycle);
+
 }  // namespace rearm::geometry

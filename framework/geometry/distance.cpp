@@ -2,6 +2,7 @@
 // control law; only the inside test is an exact predicate, contains()).
 #include "geometry/distance.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -51,6 +52,18 @@ double signed_distance(const Polygon& p, const Point& x) {
   check_finite(x, "signed_distance");
   const double d = nearest_on_boundary(p, x).distance;
   return contains(p, x) ? -d : d;
+}
+
+double disk_clearance(const Polygon& workspace, const std::vector<Polygon>& obstacles,
+                      const std::vector<Disk>& objects, const Point& center, double radius,
+                      std::optional<std::size_t> skip) {
+  double best = -signed_distance(workspace, center) - radius;
+  for (const Polygon& o : obstacles) best = std::min(best, signed_distance(o, center) - radius);
+  for (std::size_t i = 0; i < objects.size(); ++i) {
+    if (skip && *skip == i) continue;
+    best = std::min(best, (objects[i].center - center).norm() - objects[i].radius - radius);
+  }
+  return best;
 }
 
 }  // namespace rearm::geometry

@@ -1,6 +1,11 @@
 // Point-to-polygon distance and nearest point (doubles; the control law's inputs).
 #pragma once
 
+#include <cstddef>
+#include <optional>
+#include <vector>
+
+#include "geometry/convex.h"
 #include "geometry/polygon.h"
 
 namespace rearm::geometry {
@@ -18,6 +23,13 @@ double distance(const Polygon& p, const Point& x);
 // inside, at distance 0). Clearance of a point to an obstacle, or to a workspace from within
 // (negated).
 double signed_distance(const Polygon& p, const Point& x);
+// Ground-truth clearance (m) of the disk (center, radius) in a scene: to the workspace boundary
+// (from inside), every obstacle polygon and every object disk but `skip` — the smallest of
+// (signed distance of the centre) − radius, negative when overlapping. The kinematic plant and
+// the Box2D world measure collisions and minimum clearance with it.
+double disk_clearance(const Polygon& workspace, const std::vector<Polygon>& obstacles,
+                      const std::vector<Disk>& objects, const Point& center, double radius,
+                      std::optional<std::size_t> skip = std::nullopt);
 // Nearest point of a segment [a, b] to x.
 Point nearest_on_segment(const Point& a, const Point& b, const Point& x);
 

@@ -39,11 +39,18 @@
 
 #include "core/error.h"
 #include "geometry/convex.h"
-#include "sim/clearance.h"
+#include "geometry/distance.h"
 #include "sim/convex_pieces.h"
 
 namespace rearm::sim {
 namespace {
+
+// The static scene the clearance is measured against: the workspace and every familiar and
+// unknown obstacle, validated.
+struct StaticScene {
+  geometry::Polygon workspace;
+  std::vector<geometry::Polygon> obstacles;
+};
 
 static_assert(kMaxPieceVertices == b2_maxPolygonVertices,
               "convex_pieces.h must cut pieces to Box2D's b2_maxPolygonVertices");
@@ -326,10 +333,12 @@ struct SimWorld::Impl : public b2ContactListener {
   }
 
   double measure() const {
-    double c = disk_clearance(scene, objects, x, robot_radius, held);
+    double c =
+        geometry::disk_clearance(scene.workspace, scene.obstacles, objects, x, robot_radius, held);
     if (held) {
       const geometry::Disk& d = objects[*held];
-      c = std::min(c, disk_clearance(scene, objects, d.center, d.radius, held));
+      c = std::min(c, geometry::disk_clearance(scene.workspace, scene.obstacles, objects, d.center,
+                                               d.radius, held));
     }
     return c;
   }

@@ -17,6 +17,7 @@
 #include <utility>
 
 #include "core/error.h"
+#include "geometry/boolean.h"
 #include "geometry/cgal_internal.h"
 
 namespace rearm::topology::detail {
@@ -89,31 +90,6 @@ bool has_duplicates(std::vector<Point> v) {
   return std::adjacent_find(v.begin(), v.end()) != v.end();
 }
 
-// A CGAL boundary cycle in doubles, cut into simple loops (geometry/boolean.cpp's rounding of
-// Boolean results, repeated here because the exact pieces live in this module): a relatively
-// simple cycle through one vertex twice becomes two loops; consecutive duplicates and loops
-// of fewer than 3 vertices are dropped. Each loop keeps CGAL's orientation.
-std::vector<Polygon> simple_loops(const std::vector<Point>& cycle) {
-  std::vector<Point> path;
-  std::vector<Polygon> loops;
-  auto emit = [&loops](std::vector<Point> v) {
-    if (v.size() >= 3) loops.push_back(Polygon{std::move(v)});
-  };
-  for (const Point& v : cycle) {
-    if (!path.empty() && path.back() == v) continue;
-    const auto seen = std::find(path.begin(), path.end(), v);
-    if (seen != path.end()) {
-      emit(std::vector<Point>(seen, path.end()));
-      path.erase(seen + 1, path.end());
-    } else {
-      path.push_back(v);
-    }
-  }
-  while (path.size() > 1 && path.back() == path.front()) path.pop_back();
-  emit(std::move(path));
-  return loops;
-}
-
 void split_rounded(std::vector<Polygon> loops, Loop& l) {
   for (Polygon& loop : loops) {
     if (loop.signed_area() > 0) {
@@ -161,7 +137,7 @@ LoopPtr exact_loop(CPolygon p, bool settle) {
   // Cutting at repeated vertices is quadratic; most cycles have none.
   l->pinched = has_duplicates(rounded);
   if (l->pinched) {
-    split_rounded(simple_loops(rounded), *l);
+    split_rounded(geometry::simple_loops(rounded), *l);
   } else {
     split_rounded({Polygon{std::move(rounded)}}, *l);
   }

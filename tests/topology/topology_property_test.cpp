@@ -29,6 +29,7 @@
 #include "support/geometry_oracle.h"
 #include "support/scale.h"
 #include "topology/topology_check.h"
+#include "topology/topology_scenes.h"
 
 namespace rearm::topology {
 namespace {
@@ -37,26 +38,14 @@ using geometry::Disk;
 using geometry::Point;
 using geometry::Polygon;
 using geometry::Region;
+using test_scenes::rect;
+using test_scenes::rotated_rect;
 
 constexpr double kRoomSize = 10.0;                   // m
 constexpr int kCells = 400;                          // raster cells per side
 constexpr double kCell = kRoomSize / kCells;         // 2.5 cm
 constexpr double kMargin = 1.5 * kCell;              // δ of the sandwich
 constexpr double kPointClearance = kMargin + kCell;  // x, x* drawn this far from boundaries
-
-Polygon rect(double x0, double y0, double x1, double y1) {
-  return Polygon{{{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}};
-}
-
-Polygon rotated_rect(const Point& c, double w, double h, double angle) {
-  const Eigen::Rotation2Dd rot(angle);
-  Polygon p;
-  for (const Point& v :
-       {Point(-w / 2, -h / 2), Point(w / 2, -h / 2), Point(w / 2, h / 2), Point(-w / 2, h / 2)}) {
-    p.vertices.push_back(c + rot * v);
-  }
-  return p;
-}
 
 struct Scene {
   std::vector<Polygon> familiar;
