@@ -14,7 +14,8 @@ ctest --test-dir "$BUILD" --no-tests=error --output-on-failure -j"$JOBS"
 
 # Sanitized run of the tests that feed arbitrary input (parser fuzzing, automaton readers,
 # the command line, scene and perception input), of the translator's and controller's
-# property tests and of the geometry and reactive tests, at reduced size (REARM_TEST_SCALE).
+# property tests, of the geometry and reactive tests and of the baselines (OMPL, Box2D
+# execution), at reduced size (REARM_TEST_SCALE).
 ASAN_BUILD=${ASAN_BUILD:-build-asan}
 ASAN_TESTS="parser_test;formula_test;bdd_test;letter_set_test;automaton_io_test"
 ASAN_TESTS+=";translate_lasso_test;mission_controller_test;mission_property_test;cli_test"
@@ -25,6 +26,8 @@ ASAN_TESTS+=";navigation_test"
 ASAN_TESTS+=";grasp_test;kinematics_test;closed_loop_test;topology_check_test;topology_property_test"
 ASAN_TESTS+=";progress_monitor_test;kinematic_plant_test;interface_layer_test;executive_test;end_to_end_test"
 ASAN_TESTS+=";scenario_io_test;convex_pieces_test;sim_world_test;json_writer_test;file_io_test;run_scenario_test"
+ASAN_TESTS+=";random_instance_test;motion_query_test;planners_test;executor_test;validator_test"
+ASAN_TESTS+=";run_baseline_test"
 cmake -S . -B "$ASAN_BUILD" -DCMAKE_BUILD_TYPE=Debug -DREARM_SANITIZE=ON -DREARM_WERROR=ON \
   -DREARM_BUILD_TESTS=ON -DREARM_BUILD_BENCH=OFF "-DREARM_TESTS=$ASAN_TESTS"
 cmake --build "$ASAN_BUILD" -j"$JOBS"

@@ -16,6 +16,10 @@ const Command kCommands[] = {
     {"diffeo", "build and plot the diffeomorphism of a static scene", &rearm::cli::run_diffeo},
     {"run", "run a scenario's task in the Box2D world (metrics, figure, animation)",
      &rearm::cli::run_run},
+    {"baseline", "plan and execute a scenario with an OMPL rearrangement baseline (mRS, BiRRT)",
+     &rearm::cli::run_baseline},
+    {"compare", "rearm vs the baselines on random instances (table and plot)",
+     &rearm::cli::run_compare},
 };
 
 void print_help() {

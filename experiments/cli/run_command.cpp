@@ -32,13 +32,6 @@ constexpr const char* kUsage =
     "Exit: 0 when the task completed, 1 when it ended infeasible, stuck or by timeout,\n"
     "2 for bad usage or an invalid scenario.\n";
 
-std::uint64_t parse_uint(const std::string& flag, const std::string& v) {
-  if (v.empty() || v.size() > 19 || v.find_first_not_of("0123456789") != std::string::npos) {
-    throw Error(flag + " expects a non-negative integer, got '" + v + "'");
-  }
-  return std::stoull(v);
-}
-
 }  // namespace
 
 int run_run(const std::vector<std::string>& args) {
@@ -54,9 +47,9 @@ int run_run(const std::vector<std::string>& args) {
     } else if (a == "--out") {
       out_dir = option_value(args, i);
     } else if (a == "--seed") {
-      options.seed = parse_uint(a, option_value(args, i));
+      options.seed = parse_count(a, option_value(args, i));
     } else if (a == "--stride") {
-      const std::uint64_t s = parse_uint(a, option_value(args, i));
+      const std::uint64_t s = parse_count(a, option_value(args, i));
       if (s < 1 || s > 100000) throw Error("--stride must be in [1, 100000]");
       stride = static_cast<int>(s);
     } else if (a == "--plant") {

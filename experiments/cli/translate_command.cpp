@@ -39,7 +39,7 @@ std::string stats_text(const ltl::TranslationStats& st) {
   return s;
 }
 
-double parse_number(const std::string& flag, const std::string& v) {
+double parse_positive_number(const std::string& flag, const std::string& v) {
   try {
     std::size_t used = 0;
     const double x = std::stod(v, &used);
@@ -80,9 +80,9 @@ int run_translate(const std::vector<std::string>& args) {
     } else if (a == "--no-simplify") {
       options.simplify = false;
     } else if (a == "--max-states") {
-      options.max_states = static_cast<std::size_t>(parse_number(a, value()));
+      options.max_states = static_cast<std::size_t>(parse_positive_number(a, value()));
     } else if (a == "--max-seconds") {
-      options.max_seconds = parse_number(a, value());
+      options.max_seconds = parse_positive_number(a, value());
     } else if (a.size() > 1 && a[0] == '-' && a[1] == '-') {
       throw Error("unknown option '" + a + "'\n" + kUsage);
     } else if (have_formula) {

@@ -413,4 +413,129 @@ TEST(CliTest, RunRejectsBadScenariosAndUsage) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(CliTest, BaselineWritesMetricsWithRunsKeysAndThePlannersCounters) {
+  const std::string dir = temp_dir();
+  const Result r =
+      run("baseline experiments/scenarios/fig5.yaml --method birrt --time-limit 30 "
+          "--seed 4 --no-animation --out " +
+          dir);
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_TRUE(contains(r.out, "fig5 (birrt): completed")) << r.out;
+  const std::string metrics = slurp(dir + "/metrics.json");
+  EXPECT_TRUE(JsonChecker(metrics).ok());
+  // The keys of `rearm run`'s metrics.json, then the planners' own.
+  for (const char* key : {"\"scenario\"",
+                          "\"source\"",
+                          "\"plant\"",
+                          "\"seed\": 4",
+                          "\"task\"",
+                          "\"status\": \"completed\"",
+                          "\"reason\"",
+                          "\"collisions\": 0",
+                          "\"min_clearance\"",
+                          "\"sim_time_s\"",
+                          "\"steps\"",
+                          "\"dt_s\"",
+                          "\"wall_time_s\"",
+                          "\"controller_time_s\"",
+                          "\"real_time_factor\"",
+                          "\"fix_mode_entries\"",
+                          "\"robot_path_length_m\"",
+                          "\"object_path_length_m\"",
+                          "\"rebuilds\"",
+                          "\"topology_checks\"",
+                          "\"actions\"",
+                          "\"objects\"",
+                          "\"method\": \"birrt\"",
+                          "\"planning_time_s\"",
+                          "\"subqueries\"",
+                          "\"nodes\"",
+                          "\"action\": \"release(M1,l2)\""}) {
+    EXPECT_TRUE(contains(metrics, key)) << key;
+  }
+  EXPECT_TRUE(JsonChecker(slurp(dir + "/trajectory.json")).ok());
+  EXPECT_EQ(std::filesystem::exists(dir + "/run.png"),
+            have_python_modules("import matplotlib; import PIL"));
+  // B1 cannot solve the cyclic shift and says why (exit 1: the method failed cleanly).
+  const Result b1 =
+      run("baseline experiments/scenarios/fig5.yaml --method mrs --no-plot --out " + dir + "/mrs");
+  EXPECT_EQ(b1.code, 1) << b1.out;
+  EXPECT_TRUE(contains(b1.out, "infeasible (non-monotone")) << b1.out;
+  EXPECT_TRUE(contains(slurp(dir + "/mrs/metrics.json"), "\"status\": \"infeasible\""));
+  std::filesystem::remove_all(dir);
+}
+
+TEST(CliTest, BaselineRejectsBadUsage) {
+  EXPECT_EQ(run("baseline").code, 2);
+  const Result no_method = run("baseline experiments/scenarios/fig5.yaml");
+  EXPECT_EQ(no_method.code, 2);
+  EXPECT_TRUE(contains(no_method.out, "--method")) << no_method.out;
+  const Result bad_method = run("baseline experiments/scenarios/fig5.yaml --method prm");
+  EXPECT_EQ(bad_method.code, 2);
+  EXPECT_TRUE(contains(bad_method.out, "prm")) << bad_method.out;
+  for (const char* limit : {"0", "-1", "nan", "inf", "1e999", "abc"})
+    EXPECT_EQ(run(std::string("baseline experiments/scenarios/fig5.yaml --method mrs "
+                              "--time-limit ") +
+                  limit)
+                  .code,
+              2)
+        << limit;
+  EXPECT_EQ(run("baseline experiments/scenarios/fig5.yaml --method mrs --seed -3").code, 2);
+  // A patrol is no rearrangement: the task key is named.
+  const Result patrol = run("baseline experiments/scenarios/patrol.yaml --method birrt");
+  EXPECT_EQ(patrol.code, 2);
+  EXPECT_TRUE(contains(patrol.out, "task")) << patrol.out;
+  EXPECT_TRUE(contains(run("baseline --help").out, "planning_time_s"));
+}
+
+TEST(CliTest, CompareAppendsRowsAndResumesWithoutDuplicates) {
+  const std::string dir = temp_dir();
+  const std::string args =
+      "compare --objects 1-2 --seeds 1 --classes cyclic --methods mrs,birrt "
+      "--time-limit 5 --threads 2 --no-plot --out " +
+      dir;
+  const Result first = run(args);
+  ASSERT_EQ(first.code, 0) << first.out;
+  const std::string csv = slurp(dir + "/comparison.csv");
+  auto lines = [](const std::string& text) {
+    std::vector<std::string> out;
+    std::istringstream in(text);
+    for (std::string l; std::getline(in, l);) out.push_back(l);
+    return out;
+  };
+  const auto rows = lines(csv);
+  ASSERT_EQ(rows.size(), 5u) << csv;  // header + 2 object counts x 2 methods
+  EXPECT_EQ(rows[0].rfind("method,class,objects", 0), 0u);
+  // N = 2 cyclic: B1 proves it non-monotone, B2 solves it.
+  bool b1_infeasible = false, b2_solved = false;
+  for (const auto& r : rows) {
+    if (r.rfind("mrs,cyclic,2,", 0) == 0) b1_infeasible = contains(r, ",0,infeasible,");
+    if (r.rfind("birrt,cyclic,2,", 0) == 0) b2_solved = contains(r, ",1,completed,");
+  }
+  EXPECT_TRUE(b1_infeasible) << csv;
+  EXPECT_TRUE(b2_solved) << csv;
+  // Every instance is kept as a scenario file.
+  int files = 0;
+  for (const auto& e : std::filesystem::directory_iterator(dir + "/instances"))
+    files += e.path().extension() == ".yaml";
+  EXPECT_EQ(files, 2);
+  // A rerun finds every row and runs nothing; a cut row is run again, once.
+  const Result again = run(args);
+  EXPECT_EQ(again.code, 0);
+  EXPECT_TRUE(contains(again.out, "4 already in")) << again.out;
+  EXPECT_EQ(lines(slurp(dir + "/comparison.csv")).size(), 5u);
+  {
+    std::ofstream cut(dir + "/comparison.csv", std::ios::trunc);
+    cut << rows[0] << "\n" << rows[1] << "\n" << rows[2] << "\n" << rows[3].substr(0, 5);
+  }
+  const Result resumed = run(args);
+  EXPECT_EQ(resumed.code, 0) << resumed.out;
+  EXPECT_TRUE(contains(resumed.out, "2 already in")) << resumed.out;
+  EXPECT_EQ(lines(slurp(dir + "/comparison.csv")).size(), 6u);  // the cut line stays alone, ignored
+  EXPECT_EQ(run("compare --objects 0-3").code, 2);
+  EXPECT_EQ(run("compare --classes spiral").code, 2);
+  EXPECT_EQ(run("compare --methods rearm,rrtstar").code, 2);
+  std::filesystem::remove_all(dir);
+}
+
 }  // namespace

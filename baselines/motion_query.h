@@ -1,0 +1,65 @@
+// Motion queries on OMPL (docs/experiments.md, "Baseline"): a disk in the plane — the robot
+// alone (transit) or the robot–object pair (transfer, radius r + ρ_i) — from a start to a goal
+// among the obstacles and the arrangement's other disks, with og::SimpleSetup + og::RRTConnect
+// in a 2-D RealVectorStateSpace. Validity is exact (disk_world.h), states and motions alike.
+//
+// Determinism (docs: "ompl::RNG::setSeed is process-global and breaks under threads"): every
+// query seeds its own state sampler's and planner's RNGs with setLocalSeed, uses the
+// deterministic NearestNeighborsSqrtApprox (GNAT's pivot selection draws from an unseeded RNG),
+// and is capped by a number of planner iterations, not by time. The trial's time budget ends a
+// query early through plannerOrTerminationCondition, and only then can timing change a result.
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "baselines/disk_world.h"
+
+namespace rearm::baselines {
+
+// One planner run's budget, seeds and counters (one per trial; not shared between threads).
+class QueryContext {
+ public:
+  using Clock = std::chrono::steady_clock;
+  // time_limit in s (> 0, finite); seed: the trial's.
+  QueryContext(double time_limit, std::uint64_t seed);
+  bool expired() const { return Clock::now() >= deadline_; }
+  double remaining() const;  // s, >= 0
+  double elapsed() const;    // s since construction
+  // The next query's seed: a function of the trial seed and the query's index only.
+  std::uint32_t next_seed();
+  long subqueries = 0;               // motion queries posed to OMPL
+  long nodes = 0;                    // states in their trees, summed
+  int iterations_per_query = 20000;  // RRTConnect iterations before a query gives up
+
+ private:
+  Clock::time_point start_, deadline_;
+  std::uint64_t seed_;
+  std::uint64_t counter_ = 0;
+};
+
+// "1 s", "0.25 s": a duration for messages.
+std::string seconds_text(double s);
+
+enum class QueryStatus { kSolved, kStartInvalid, kGoalInvalid, kNoPath, kTimeout };
+const char* to_string(QueryStatus s);
+
+struct QueryResult {
+  QueryStatus status = QueryStatus::kNoPath;
+  std::vector<geometry::Point> path;  // start ... goal, shortcut; when solved
+  long nodes = 0;
+};
+
+// Plans a path for the disk (radius, with `margin` of clearance) from start to goal among the
+// world and `disks` (but `skip`). kNoPath: RRTConnect's iteration cap passed without an exact
+// solution (haveExactSolutionPath); kTimeout: the trial's budget ran out. The returned path is
+// shortcut greedily (deterministic: each vertex joined to the farthest later one it sees).
+QueryResult plan_motion(const DiskWorld& world, const std::vector<geometry::Disk>& disks,
+                        std::optional<std::size_t> skip, double radius, double margin,
+                        const geometry::Point& start, const geometry::Point& goal,
+                        QueryContext& ctx, double range = 0.0);
+
+}  // namespace rearm::baselines

@@ -1,0 +1,144 @@
+// Baseline trials end to end (issue 7, acceptance 1): plans executed in the same Box2D world as
+// rearm's runs, with the outcome judged on the simulator's final object positions against the
+// scenario file's region polygons (exact point location), not on the planner's own account.
+#include "baselines/run_baseline.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <regex>
+
+#include "experiment/run_scenario.h"
+#include "scenario/scenario_io.h"
+
+namespace rearm::baselines {
+namespace {
+
+scenario::Scenario load(const std::string& name) {
+  return scenario::load_scenario("experiments/scenarios/" + name + ".yaml");
+}
+
+BaselineRecord trial(const scenario::Scenario& s, Method m, std::uint64_t seed = 1,
+                     double limit = 60) {
+  BaselineOptions o;
+  o.method = m;
+  o.seed = seed;
+  o.time_limit = limit;
+  return run_baseline(s, o);
+}
+
+// Every release(M, l) of the task: M's simulated final centre lies in l's polygon.
+void expect_released_in_regions(const scenario::Scenario& s, const BaselineRecord& r) {
+  ASSERT_TRUE(r.executed);
+  const auto& end = r.execution.objects_end;
+  ASSERT_EQ(end.size(), s.objects.size());
+  const std::regex release(R"(release\((\w+),(\w+)\))");
+  int checked = 0;
+  for (std::sregex_iterator it(s.task.begin(), s.task.end(), release), stop; it != stop; ++it) {
+    const std::string object = (*it)[1], region = (*it)[2];
+    for (std::size_t i = 0; i < s.objects.size(); ++i) {
+      if (s.objects[i].name != object) continue;
+      for (const auto& g : s.regions) {
+        if (g.name != region) continue;
+        EXPECT_TRUE(geometry::contains(g.polygon, end[i]))
+            << object << " ends at (" << end[i].x() << ", " << end[i].y() << "), outside "
+            << region;
+        ++checked;
+      }
+    }
+  }
+  EXPECT_GT(checked, 0);
+}
+
+TEST(RunBaseline, MonotoneInstanceByB1AndB2InBox2d) {
+  const auto s = load("monotone");
+  for (Method m : {Method::kMrs, Method::kBirrt}) {
+    const BaselineRecord r = trial(s, m);
+    EXPECT_EQ(r.status, "completed") << to_string(m) << ": " << r.reason;
+    EXPECT_TRUE(r.violations.empty());
+    EXPECT_EQ(r.execution.collisions, 0) << to_string(m);
+    EXPECT_GE(r.execution.min_clearance, 0) << to_string(m);
+    EXPECT_EQ(r.plan.moves.size(), 3u) << to_string(m);
+    expect_released_in_regions(s, r);
+    // grasp and release per move, each succeeded.
+    ASSERT_EQ(r.execution.actions.size(), 6u);
+    for (const auto& a : r.execution.actions) EXPECT_EQ(a.outcome, "succeeded") << a.action;
+  }
+}
+
+TEST(RunBaseline, Fig5CyclicB1ReportsNonMonotoneB2Solves) {
+  const auto s = load("fig5");
+  const BaselineRecord b1 = trial(s, Method::kMrs);
+  EXPECT_EQ(b1.status, "infeasible");
+  EXPECT_NE(b1.reason.find("non-monotone"), std::string::npos) << b1.reason;
+  EXPECT_FALSE(b1.executed);
+  EXPECT_EQ(b1.subqueries, 0);  // the proof needs no sampling
+  const BaselineRecord b2 = trial(s, Method::kBirrt);
+  EXPECT_EQ(b2.status, "completed") << b2.reason;
+  EXPECT_EQ(b2.execution.collisions, 0);
+  EXPECT_GE(b2.plan.moves.size(), 4u);
+  expect_released_in_regions(s, b2);
+}
+
+TEST(RunBaseline, ReplanningNoticesTheUnknownWall) {
+  const auto s = load("discovery");
+  const BaselineRecord offline = trial(s, Method::kBirrt);
+  EXPECT_EQ(offline.status, "completed") << offline.reason;
+  EXPECT_EQ(offline.replans, 0);
+  const BaselineRecord r = trial(s, Method::kReplan);
+  EXPECT_EQ(r.status, "completed") << r.reason;
+  EXPECT_GE(r.replans, 1);  // the first plan runs through C1, which it could not see
+  EXPECT_EQ(r.execution.collisions, 0);
+  expect_released_in_regions(s, r);
+  // Replanning on the full-knowledge instance Fig. 5 also completes.
+  const BaselineRecord f = trial(load("fig5"), Method::kReplan);
+  EXPECT_EQ(f.status, "completed") << f.reason;
+  EXPECT_EQ(f.execution.collisions, 0);
+}
+
+std::string untimed(const std::string& metrics) {
+  static const std::regex timing(
+      R"re(\n\s*"(wall_time_s|controller_time_s|planning_time_s|real_time_factor)": [^\n]*)re");
+  return std::regex_replace(metrics, timing, "");
+}
+
+TEST(RunBaseline, SameSeedSameMetricsApartFromTiming) {
+  const auto s = load("fig5");
+  const std::string a = baseline_metrics_json(s, trial(s, Method::kBirrt, 9));
+  const std::string b = baseline_metrics_json(s, trial(s, Method::kBirrt, 9));
+  EXPECT_EQ(untimed(a), untimed(b));
+  EXPECT_NE(a.find("\"planning_time_s\""), std::string::npos);
+}
+
+TEST(RunBaseline, MetricsCarryEveryKeyOfRearmRun) {
+  const auto s = load("fig3");
+  experiment::RunOptions o;
+  o.plant = experiment::PlantKind::kKinematic;
+  o.record = false;
+  const std::string rearm = experiment::metrics_json(s, experiment::run_scenario(s, o));
+  const auto fig5 = load("fig5");
+  const std::string base = baseline_metrics_json(fig5, trial(fig5, Method::kBirrt));
+  const std::regex key(R"re(\n  "(\w+)":)re");  // top-level keys (two-space indent)
+  int n = 0;
+  for (std::sregex_iterator it(rearm.begin(), rearm.end(), key), stop; it != stop; ++it, ++n)
+    EXPECT_NE(base.find("\n  \"" + (*it)[1].str() + "\":"), std::string::npos) << (*it)[1];
+  EXPECT_GE(n, 15);
+  for (const char* extra : {"planning_time_s", "subqueries", "nodes", "method", "replans"})
+    EXPECT_NE(base.find("\n  \"" + std::string(extra) + "\":"), std::string::npos) << extra;
+}
+
+TEST(RunBaseline, BadOptionsAndTasksAreClearErrors) {
+  const auto s = load("fig5");
+  BaselineOptions o;
+  for (double bad : {0.0, -1.0, std::nan(""), double(INFINITY)}) {
+    o.time_limit = bad;
+    EXPECT_THROW(run_baseline(s, o), Error) << bad;
+  }
+  EXPECT_THROW(method_from_string("prm"), Error);
+  EXPECT_EQ(method_from_string("replan"), Method::kReplan);
+  o.time_limit = 1;
+  EXPECT_THROW(run_baseline(load("patrol"), o), scenario::ScenarioError);
+}
+
+}  // namespace
+}  // namespace rearm::baselines
