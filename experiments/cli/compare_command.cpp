@@ -39,19 +39,23 @@ namespace fs = std::filesystem;
 constexpr const char* kUsage =
     "usage: rearm compare [--objects A-B] [--seeds K] [--classes random,cyclic]\n"
     "                     [--methods rearm,mrs,birrt] [--density D] [--time-limit S]\n"
-    "                     [--seed N] [--threads T] [--out DIR] [--no-plot]\n\n"
+    "                     [--unknown-shapes round|polygon] [--seed N] [--threads T]\n"
+    "                     [--out DIR] [--no-plot]\n\n"
     "Runs every method on K random instances (scenario::random_instance) per object count in\n"
     "A..B and goal class (random goals; cyclic: each goal occupied by the next object), in the\n"
     "Box2D world. rearm discovers the obstacles with its sensor; mrs (B1) and birrt (B2) get the\n"
     "full map and S seconds of planning time; replan is B2 replanning on discovery.\n"
+    "Unknown obstacles are ellipses (round: strongly convex, as the paper assumes) or\n"
+    "rectangles and random hulls (polygon: flat faces, outside the paper's assumption).\n"
     "Appends one row per trial to DIR/comparison.csv as it finishes (a rerun skips the rows\n"
     "already there), then writes DIR/comparison.md (table) and DIR/planning_time.png; every\n"
     "instance is kept as DIR/instances/<name>.yaml (rerun it with rearm run / baseline).\n"
     "Defaults: --objects 1-6 --seeds 10 --classes random,cyclic --methods rearm,mrs,birrt\n"
-    "--density 0.1 --time-limit 10 --seed 0 --threads 2 --out out/comparison\n";
+    "--density 0.1 --time-limit 10 --unknown-shapes round --seed 0 --threads 2\n"
+    "--out out/comparison\n";
 
 constexpr const char* kHeader =
-    "method,class,objects,density,achieved_density,rep,instance_seed,success,status,planning_time_"
+    "method,class,objects,density,unknown_shapes,achieved_density,rep,instance_seed,success,status,planning_time_"
     "s,wall_time_s,"
     "sim_time_s,robot_path_m,object_path_m,actions,fix_mode_entries,replans,collisions,"
     "min_clearance,subqueries,nodes,goals_reached,host,revision";
@@ -63,11 +67,15 @@ struct Trial {
   int rep;
   std::uint64_t instance_seed;
   bool first_method = false;
-  std::string key() const {
-    return method + "," + scenario::to_string(goal_class) + "," + std::to_string(objects) + "," +
-           std::to_string(rep) + "," + std::to_string(instance_seed);
-  }
 };
+
+// What identifies a row for resuming: the CSV's first seven fields but achieved_density.
+std::string row_key(const std::string& method, const std::string& goal_class,
+                    const std::string& objects, const std::string& density,
+                    const std::string& shapes, const std::string& rep, const std::string& seed) {
+  return method + "," + goal_class + "," + objects + "," + density + "," + shapes + "," + rep +
+         "," + seed;
+}
 
 std::vector<std::string> split(const std::string& s, char sep) {
   std::vector<std::string> out;
@@ -113,14 +121,15 @@ bool goals_reached(const scenario::Scenario& s, const std::vector<geometry::Poin
   return end.size() == p.object_count() && p.goals_reached(end);
 }
 
-std::string run_trial(const Trial& t, double density, double time_limit, const std::string& host,
-                      const fs::path& instances) {
+std::string run_trial(const Trial& t, double density, bool round_unknown, double time_limit,
+                      const std::string& host, const fs::path& instances) {
   static const std::string rev = revision();  // once per process
   scenario::InstanceSpec spec;
   spec.objects = t.objects;
   spec.obstacle_density = density;
   spec.goal_class = t.goal_class;
   spec.seed = t.instance_seed;
+  spec.round_unknown = round_unknown;
   const scenario::Scenario s = scenario::random_instance(spec);
   // The instance as a scenario file, so any row can be rerun with `rearm run` or
   // `rearm baseline` (written by the first method of the list only).
@@ -131,7 +140,8 @@ std::string run_trial(const Trial& t, double density, double time_limit, const s
   for (const auto& f : s.familiar) area += f.polygon.area();
   for (const auto& u : s.unknown) area += u.polygon.area();
   row << t.method << ',' << scenario::to_string(t.goal_class) << ',' << t.objects << ','
-      << fmt(density) << ',' << fmt(area / s.workspace.area()) << ',' << t.rep << ','
+      << fmt(density) << ',' << (round_unknown ? "round" : "polygon") << ','
+      << fmt(area / s.workspace.area()) << ',' << t.rep << ','
       << t.instance_seed << ',';
   if (t.method == "rearm") {
     experiment::RunOptions o;
@@ -176,6 +186,7 @@ int run_compare(const std::vector<std::string>& args) {
   std::uint64_t base_seed = 0;
   std::string out_dir = "out/comparison";
   bool plot = true;
+  std::string shapes = "round";
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     if (a == "--help" || a == "-h") {
@@ -209,6 +220,10 @@ int run_compare(const std::vector<std::string>& args) {
       if (threads < 1 || threads > 256) throw Error("--threads must be in [1, 256]");
     } else if (a == "--out") {
       out_dir = option_value(args, i);
+    } else if (a == "--unknown-shapes") {
+      shapes = option_value(args, i);
+      if (shapes != "round" && shapes != "polygon")
+        throw Error("--unknown-shapes expects round or polygon, got '" + shapes + "'");
     } else if (a == "--no-plot") {
       plot = false;
     } else {
@@ -241,8 +256,8 @@ int run_compare(const std::vector<std::string>& args) {
       throw Error(csv.string() + ": not a comparison file of this version (header differs)");
     while (std::getline(in, line)) {
       const auto f = split(line, ',');
-      if (f.size() < 7) continue;  // a row cut by an interruption: run again
-      done.insert(f[0] + "," + f[1] + "," + f[2] + "," + f[5] + "," + f[6]);
+      if (f.size() < 8) continue;  // a row cut by an interruption: run again
+      done.insert(row_key(f[0], f[1], f[2], f[3], f[4], f[6], f[7]));
     }
   }
   bool ends_mid_line = false;
@@ -259,8 +274,12 @@ int run_compare(const std::vector<std::string>& args) {
     std::fflush(out);
   }
   std::vector<Trial> todo;
+  auto key = [&](const Trial& t) {
+    return row_key(t.method, scenario::to_string(t.goal_class), std::to_string(t.objects),
+                   fmt(density), shapes, std::to_string(t.rep), std::to_string(t.instance_seed));
+  };
   for (const auto& t : trials)
-    if (!done.count(t.key())) todo.push_back(t);
+    if (!done.count(key(t))) todo.push_back(t);
   std::printf("compare: %zu trials, %zu already in %s, %zu to run on %d threads\n", trials.size(),
               trials.size() - todo.size(), csv.string().c_str(), todo.size(), threads);
   const std::string host = host_name();
@@ -273,10 +292,10 @@ int run_compare(const std::vector<std::string>& args) {
       if (k >= todo.size()) return;
       std::string row;
       try {
-        row = run_trial(todo[k], density, time_limit, host, instances);
+        row = run_trial(todo[k], density, shapes == "round", time_limit, host, instances);
       } catch (const std::exception& e) {
         const std::lock_guard<std::mutex> lock(mu);
-        error = todo[k].key() + ": " + e.what();
+        error = key(todo[k]) + ": " + e.what();
         next = todo.size();
         return;
       }

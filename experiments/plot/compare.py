@@ -39,10 +39,17 @@ def main():
     rows = list(csv.DictReader(open(path)))
     if not rows:
         sys.exit("compare.py: no rows in " + path)
+    # One panel per goal class and setting (target density, unknown obstacle shapes): rows of
+    # several settings in one file are never pooled.
+    def panel(r):
+        return (r["class"], r["density"], r["unknown_shapes"])
     cells = defaultdict(list)
     for r in rows:
-        cells[(r["class"], r["method"], int(r["objects"]))].append(r)
-    classes = sorted({r["class"] for r in rows}, key=lambda c: (c != "random", c))
+        cells[(panel(r), r["method"], int(r["objects"]))].append(r)
+    classes = sorted({panel(r) for r in rows}, key=lambda c: (c[1], c[2], c[0] != "random", c[0]))
+
+    def title(c):
+        return "goal class: %s, density %s, unknown obstacles: %s" % c
     methods = [m for m in METHOD_ORDER if any(r["method"] == m for r in rows)]
     counts = sorted({int(r["objects"]) for r in rows})
 
@@ -54,7 +61,7 @@ def main():
              "successful trials, in seconds. Statuses of failures in the last column." %
              (path, len(rows)), ""]
     for c in classes:
-        lines += ["## Goal class: %s" % c, "",
+        lines += ["## " + title(c)[0].upper() + title(c)[1:], "",
                   "| method | N | success | time median [IQR] (s) | actions | robot path (m) "
                   "| failures |",
                   "|---|---|---|---|---|---|---|"]
@@ -109,7 +116,7 @@ def main():
                             label=METHOD_LABEL.get(m, m))
             ax2.plot(sx, sr, marker="o", label=METHOD_LABEL.get(m, m))
         ax.set_yscale("log")
-        ax.set_title("goal class: %s" % c)
+        ax.set_title(title(c), fontsize=9)
         ax.set_ylabel("planning / compute time (s), median and IQR")
         ax.grid(True, which="both", alpha=0.3)
         ax2.set_ylim(-0.05, 1.05)

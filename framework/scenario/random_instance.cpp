@@ -52,6 +52,15 @@ constexpr double kMinHullArea = 0.1;  // m²: rejects slivers
 // m: Box2D welds vertices closer than its linear slop (0.005 m), and very short edges make the
 // reactive layer's polygon operations ill-conditioned; hulls with a shorter edge are redrawn.
 constexpr double kMinHullEdge = 0.05;
+// Unknown obstacles by default (InstanceSpec::round_unknown): ellipses, the paper's strongly
+// convex unknown obstacles (§II, [35, Assumption 2]: positive curvature everywhere, so the
+// navigation law of [7] has no stable equilibrium on a flat face that squarely faces the goal).
+// kEllipseSides vertices at uniform parametric angles: with semi-axes >= kMinObstacleSide / 2
+// every edge is >= 0.2 · 2 sin(π/24) = 0.052 m > kMinHullEdge. Aspect ratio at most
+// kMaxEllipseAspect keeps the curvature radius at the ends of the minor axis, a²/b, within
+// 3.4 times the semi-major axis.
+constexpr int kEllipseSides = 24;
+constexpr double kMaxEllipseAspect = 1.5;
 // Among this many acceptable poses of a new obstacle the largest is kept. Every obstacle costs
 // a w-wide passage around it, so uniform sequential placement jams early (about 0.05 in the
 // default 10 x 10 m instance); preferring large obstacles roughly doubles the density reached
@@ -319,10 +328,21 @@ class Generator {
                                             " m from every object start and out of every region");
   }
 
-  // A familiar shape (a rectangle or an L, possibly non-convex) or an unknown one (a rectangle
-  // or the hull of random points in a disk, convex), centred near the origin, before rotation.
-  // Empty when a hull came out a sliver or with a very short edge.
+  // A familiar shape (a rectangle or an L, possibly non-convex) or an unknown one (an ellipse,
+  // or with round_unknown off a rectangle or the hull of random points in a disk, convex),
+  // centred near the origin, before rotation. Empty when a hull came out a sliver or with a
+  // very short edge.
   Polygon sample_shape(Rng& rng, bool unknown) const {
+    if (unknown && spec_.round_unknown) {
+      const double a = rng.uniform(kMinObstacleSide, kMaxObstacleSide) / 2;
+      const double b = rng.uniform(std::max(kMinObstacleSide / 2, a / kMaxEllipseAspect), a);
+      std::vector<Point> points;
+      for (int k = 0; k < kEllipseSides; ++k) {
+        const double t = 2 * std::numbers::pi * k / kEllipseSides;
+        points.emplace_back(a * std::cos(t), b * std::sin(t));
+      }
+      return Polygon{std::move(points)};
+    }
     const bool rectangular = rng.bernoulli(0.5);
     if (rectangular) {
       const double a = rng.uniform(kMinObstacleSide, kMaxObstacleSide);

@@ -12,7 +12,8 @@
 // goals at random (a goal may cover another object's start, so some class-a instances are
 // non-monotone too, as in the rearrangement literature). Obstacles are added after the objects,
 // goals and robot: familiar ones P1.. (rotated rectangles and L-shapes, possibly non-convex)
-// and unknown ones C1.. (rotated rectangles and convex hulls of random points in a disk), each
+// and unknown ones C1.. (rotated ellipses, strongly convex as the paper's §II assumes; or, with
+// round_unknown off, rotated rectangles and convex hulls of random points in a disk), each
 // unknown with probability unknown_fraction, until their total area reaches obstacle_density
 // of the workspace or max_attempts consecutive draws of an obstacle fail. Of the first 30
 // acceptable poses drawn for an obstacle the largest is kept (large obstacles waste less of the
@@ -95,6 +96,10 @@ struct InstanceSpec {
   GoalClass goal_class = GoalClass::kRandom;
   std::uint64_t seed = 0;
   double unknown_fraction = 0.5;   // probability that a new obstacle is unknown, in [0, 1]
+  // Unknown obstacles are ellipses (24-gons, aspect <= 1.5), strongly convex as the paper
+  // assumes (§II); false: rectangles and hulls of 5-8 random points, whose flat faces break
+  // that assumption (the reactive law can then stop in front of a face).
+  bool round_unknown = true;
   double width = 10, height = 10;  // workspace sides (m), in [0.01, 100]
   double robot_radius = 0.2;       // r (m), >= 0.01
   double object_radius = 0.25;     // ρ (m), >= 0.01

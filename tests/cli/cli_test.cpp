@@ -532,6 +532,11 @@ TEST(CliTest, CompareAppendsRowsAndResumesWithoutDuplicates) {
   EXPECT_EQ(resumed.code, 0) << resumed.out;
   EXPECT_TRUE(contains(resumed.out, "2 already in")) << resumed.out;
   EXPECT_EQ(lines(slurp(dir + "/comparison.csv")).size(), 6u);  // the cut line stays alone, ignored
+  // Other obstacle shapes are other rows: nothing is taken as already done.
+  const Result polygons = run(args + " --unknown-shapes polygon");
+  EXPECT_EQ(polygons.code, 0) << polygons.out;
+  EXPECT_TRUE(contains(polygons.out, "0 already in")) << polygons.out;
+  EXPECT_EQ(run("compare --unknown-shapes square").code, 2);
   EXPECT_EQ(run("compare --objects 0-3").code, 2);
   EXPECT_EQ(run("compare --classes spiral").code, 2);
   EXPECT_EQ(run("compare --methods rearm,rrtstar").code, 2);

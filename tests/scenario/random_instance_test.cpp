@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <functional>
 #include <limits>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -369,31 +370,56 @@ TEST(RandomInstance, UnreachableDensityStopsAndSaysSo) {
   expect_guarantees(spec, s);
 }
 
+// Exterior (turning) angles of a polygon, in (−π, π]: all positive for a strictly convex
+// counter-clockwise polygon.
+std::vector<double> turning_angles(const Polygon& p) {
+  std::vector<double> out;
+  for (std::size_t k = 0, m = p.size(); k < m; ++k) {
+    const Point e0 = p.vertices[(k + 1) % m] - p.vertices[k];
+    const Point e1 = p.vertices[(k + 2) % m] - p.vertices[(k + 1) % m];
+    out.push_back(std::atan2(cross(e0, e1), e0.dot(e1)));
+  }
+  return out;
+}
+
 TEST(RandomInstance, ObstacleKindsFollowUnknownFraction) {
-  for (const double fraction : {0.0, 0.5, 1.0}) {
-    InstanceSpec spec = make_spec(2, GoalClass::kCyclic, 0.2, 11);
-    spec.unknown_fraction = fraction;
-    const Scenario s = random_instance(spec);
-    if (fraction == 0.0) {
-      EXPECT_TRUE(s.unknown.empty());
-    }
-    if (fraction == 1.0) {
-      EXPECT_TRUE(s.familiar.empty());
-    }
-    EXPECT_FALSE(s.familiar.empty() && s.unknown.empty());
-    for (std::size_t i = 0; i < s.familiar.size(); ++i) {
-      EXPECT_EQ(s.familiar[i].name, "P" + std::to_string(i + 1));
-    }
-    for (std::size_t i = 0; i < s.unknown.size(); ++i) {
-      EXPECT_EQ(s.unknown[i].name, "C" + std::to_string(i + 1));
-      // Convex (every turn a left turn), at most 8 vertices (Box2D), no edge under 5 cm.
-      const Polygon& p = s.unknown[i].polygon;
-      EXPECT_LE(p.size(), 8u);
-      for (std::size_t k = 0, m = p.size(); k < m; ++k) {
-        EXPECT_GE((p.vertices[(k + 1) % m] - p.vertices[k]).norm(), 0.05);
-        EXPECT_GE(cross(p.vertices[(k + 1) % m] - p.vertices[k],
-                        p.vertices[(k + 2) % m] - p.vertices[(k + 1) % m]),
-                  0);
+  for (const bool round : {true, false}) {
+    for (const double fraction : {0.0, 0.5, 1.0}) {
+      InstanceSpec spec = make_spec(2, GoalClass::kCyclic, 0.2, 11);
+      spec.unknown_fraction = fraction;
+      spec.round_unknown = round;
+      const Scenario s = random_instance(spec);
+      if (fraction == 0.0) {
+        EXPECT_TRUE(s.unknown.empty());
+      }
+      if (fraction == 1.0) {
+        EXPECT_TRUE(s.familiar.empty());
+      }
+      EXPECT_FALSE(s.familiar.empty() && s.unknown.empty());
+      for (std::size_t i = 0; i < s.familiar.size(); ++i) {
+        EXPECT_EQ(s.familiar[i].name, "P" + std::to_string(i + 1));
+      }
+      for (std::size_t i = 0; i < s.unknown.size(); ++i) {
+        EXPECT_EQ(s.unknown[i].name, "C" + std::to_string(i + 1));
+        const Polygon& p = s.unknown[i].polygon;
+        for (std::size_t k = 0, m = p.size(); k < m; ++k) {
+          EXPECT_GE((p.vertices[(k + 1) % m] - p.vertices[k]).norm(), 0.05);  // no edge < 5 cm
+        }
+        const std::vector<double> turns = turning_angles(p);
+        double total = 0;
+        for (const double t : turns) {
+          total += t;
+          // Convex (no right turn); round ones strictly, and with no corner sharper than 30°
+          // (a rectangle turns 90°): the polygon of a strongly convex body, the paper's §II.
+          EXPECT_GE(t, round ? 1e-3 : 0.0);
+          if (round) {
+            EXPECT_LE(t, std::numbers::pi / 6) << s.name << " " << s.unknown[i].name;
+          }
+        }
+        EXPECT_NEAR(total, 2 * std::numbers::pi, 1e-9);  // one counter-clockwise turn
+        if (!round) {
+          EXPECT_LE(p.size(), 8u);  // hulls of at most 8 points, rectangles
+        }
       }
     }
   }
