@@ -341,8 +341,12 @@ Diffeomorphism Diffeomorphism::build(const MappedSpace& m, const DiffeoParams& p
   // §3.1–3.2: convex decompositions of every component (slivers dropped) with their trees,
   // in order of preference: cuts along reflex-vertex extensions (rectangles for orthogonal
   // shapes, no sharp angles), with flat corners split if needed; CGAL's partition (fewest
-  // pieces), likewise; a triangulation (no flat corners at all). The first candidate whose
-  // collars can all be built (§3.4) is used.
+  // pieces), likewise; a triangulation (no flat corners at all). A curved component (one that
+  // merges a movable disk or an unknown obstacle, FamiliarComponent::curved) takes the fewest
+  // pieces first instead: the reflex vertices along its arcs make extension cuts leave
+  // slivers, and purging a large piece into a sliver's centre drives det Dh towards 0 (the
+  // robot then turns in place, or Dh is singular). The first candidate whose collars can all
+  // be built (§3.4) is used.
   std::vector<std::vector<Tree>> candidates(m.familiar.size());
   std::vector<std::vector<Polygon>> pieces(m.familiar.size());
   for (std::size_t ci = 0; ci < m.familiar.size(); ++ci) {
@@ -377,6 +381,12 @@ Diffeomorphism Diffeomorphism::build(const MappedSpace& m, const DiffeoParams& p
       if (comp.polygon.area() <= params.sliver_area) continue;  // a sliver: nothing to purge
       throw Error("diffeomorphism: familiar component " + std::to_string(ci) +
                   " admits no purging tree (its convex pieces are not edge-connected)");
+    }
+    // Curved: fewest convex pieces first (stable: the preference order above breaks ties).
+    if (comp.curved) {
+      std::stable_sort(
+          candidates[ci].begin(), candidates[ci].end(),
+          [](const Tree& a, const Tree& b) { return a.pieces.size() < b.pieces.size(); });
     }
     pieces[ci] = candidates[ci].front().pieces;  // what other components' collars avoid
   }

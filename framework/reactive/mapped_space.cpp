@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <string>
 
 #include "core/error.h"
@@ -206,12 +207,18 @@ MappedSpace build_mapped_space(const SemanticInput& in, double radius, const Poi
       if (last->kind == Kind::kUnknown) {
         m.unknown.push_back(unknown_dilated[last->index]);
       } else {
+        // The model disk circumscribes the hole (the circumscribed polygon of radius
+        // ρ + r + kContactSlack): the navigation law then keeps the robot outside the very
+        // polygon that the next rebuild's freespace excludes.
         const Disk& d = in.movable[last->index];
-        m.movable.push_back(Disk{d.center, d.radius + radius});
+        m.movable.push_back(
+            Disk{d.center, (d.radius + radius + kContactSlack) /
+                               std::cos(std::numbers::pi / geometry::kDiskPolygonSides)});
       }
       continue;
     }
-    m.familiar.push_back(FamiliarComponent{drop_flat_vertices(hole), std::nullopt});
+    m.familiar.push_back(
+        FamiliarComponent{drop_flat_vertices(hole), std::nullopt, n_unknown + n_movable > 0});
   }
 
   // Pockets between F_k and ∂F_e, each merged into the boundary through its lid.
@@ -226,7 +233,11 @@ MappedSpace build_mapped_space(const SemanticInput& in, double radius, const Poi
           "mapped space: a pocket of the freespace's convex hull has no edge on the hull "
           "(internal error; please report the scene)");
     }
-    m.familiar.push_back(FamiliarComponent{std::move(pocket), lid});
+    bool curved = false;
+    for (const Source& s : sources) {
+      curved = curved || (s.kind != Kind::kFamiliar && geometry::contains(r.outer, s.rep));
+    }
+    m.familiar.push_back(FamiliarComponent{std::move(pocket), lid, curved});
   }
   return m;
 }

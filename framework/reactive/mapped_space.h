@@ -35,6 +35,9 @@ struct SemanticInput {
 struct FamiliarComponent {
   Polygon polygon;                             // simple, counter-clockwise, no collinear vertex
   std::optional<std::pair<Point, Point>> lid;  // pockets only: the edge on ∂F_e
+  // The cluster includes a movable object or an unknown obstacle: its boundary has arcs of
+  // many short edges (the circumscribed disk polygons and round dilations of §2).
+  bool curved = false;
 };
 
 struct MappedSpace {
@@ -43,7 +46,9 @@ struct MappedSpace {
   geometry::Region freespace;               // F_k: the robot's freespace component
   std::vector<FamiliarComponent> familiar;  // purged by the diffeomorphism
   std::vector<Polygon> unknown;             // dilated convex fragments, kept as they are
-  std::vector<Disk> movable;                // dilated movable objects, kept as they are
+  // Dilated movable objects, kept as they are: disks of radius (ρ + r + kContactSlack) /
+  // cos(π / kDiskPolygonSides), circumscribing the polygon the freespace leaves out for them.
+  std::vector<Disk> movable;
 };
 
 // Thrown by build_mapped_space when the robot (or pair) centre is not in the freespace: an

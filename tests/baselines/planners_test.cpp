@@ -170,7 +170,8 @@ TEST(Determinism, SameSeedSamePlanAlsoWithFourThreads) {
 
 // experiments/scenarios/pocket.yaml: M1's goal lies in a pocket too narrow for the
 // robot–object pair, so no method can solve it and B2 runs until its time limit. A generous
-// bound (bench/baselines/time_limit_bench measures the overrun): back within 3 s of a 1 s limit.
+// bound (bench/baselines/baselines_bench, TimeLimit/birrt, measures the overrun): back within
+// 3 s of a 1 s limit.
 TEST(TimeLimit, B2ReturnsSoonAfterItsLimitOnAnUnsolvableInstance) {
   const auto s = load("pocket");
   const auto p = problem_from_scenario(s);

@@ -1,7 +1,12 @@
-// The mapped space built with a dilation cache is the one built without it, bit for bit.
+// The mapped space built with a dilation cache is the one built without it, bit for bit; a
+// movable object's model disk covers exactly what the freespace leaves out for it; components
+// that merge a disk or an unknown obstacle are marked curved.
 #include "reactive/mapped_space.h"
 
 #include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
 
 #include "core/rng.h"
 #include "support/reactive_scenes.h"
@@ -44,6 +49,90 @@ TEST(MappedSpace, DilationCacheGivesTheSameSpace) {
   }
   EXPECT_GT(cache.size(), 0u);
   EXPECT_LE(cache.size(), kDilationCacheEntries);
+}
+
+
+Polygon rect(double x0, double y0, double x1, double y1) {
+  return Polygon{{Point(x0, y0), Point(x1, y0), Point(x1, y1), Point(x0, y1)}};
+}
+
+// Hand-built: the model disk of a lone movable object contains the hole of the freespace (every
+// hole vertex within its radius), is no larger (the farthest vertex lies on it), and a point
+// just outside it in any direction is in the freespace. Before, the model disk had radius
+// ρ + r, 2.2 mm short of the circumscribed hole polygon at its vertices.
+TEST(MappedSpace, ModelDiskCoversExactlyTheHoleOfAMovableObject) {
+  SemanticInput in;
+  in.workspace = rect(0, 0, 10, 10);
+  in.movable.push_back(Disk{Point(5, 5), 0.25});
+  const double r = 0.2;
+  const MappedSpace m = build_mapped_space(in, r, Point(1, 1));
+  ASSERT_EQ(m.movable.size(), 1u);
+  ASSERT_EQ(m.freespace.holes.size(), 1u);
+  ASSERT_TRUE(m.familiar.empty());
+  const Disk& d = m.movable[0];
+  EXPECT_EQ(d.center, Point(5, 5));
+  double farthest = 0;
+  for (const Point& v : m.freespace.holes[0].vertices) {
+    const double dist = (v - d.center).norm();
+    EXPECT_LE(dist, d.radius + 1e-12);
+    farthest = std::max(farthest, dist);
+  }
+  EXPECT_NEAR(farthest, d.radius, 1e-9);
+  EXPECT_GT(d.radius, 0.25 + r);  // circumscribes the r + ρ disk
+  for (int k = 0; k < 360; ++k) {
+    const double a = 2 * std::numbers::pi * k / 360;
+    const Point out = d.center + (d.radius + 1e-6) * Point(std::cos(a), std::sin(a));
+    EXPECT_TRUE(in_freespace(m, out)) << "angle " << a;
+  }
+}
+
+// Hand-built: a disk overlapping a familiar rectangle and a disk touching the wall merge into
+// curved components (a hole and a pocket); a familiar rectangle alone and a familiar L against
+// the wall (a pocket) are not curved.
+TEST(MappedSpace, ComponentsThatMergeADiskOrAnUnknownObstacleAreCurved) {
+  const double r = 0.2;
+  auto one_component = [&](const SemanticInput& in) {
+    const MappedSpace m = build_mapped_space(in, r, Point(1, 1));
+    EXPECT_EQ(m.familiar.size(), 1u);
+    return m.familiar.empty() ? FamiliarComponent{} : m.familiar.front();
+  };
+  SemanticInput base;
+  base.workspace = rect(0, 0, 10, 10);
+  {
+    SemanticInput in = base;
+    in.familiar.push_back(rect(4, 4, 6, 5));
+    in.movable.push_back(Disk{Point(5, 5.5), 0.25});  // 0.5 from the rectangle: dilations overlap
+    const FamiliarComponent c = one_component(in);
+    EXPECT_TRUE(c.curved);
+    EXPECT_FALSE(c.lid.has_value());
+  }
+  {
+    SemanticInput in = base;
+    in.unknown.push_back(rect(6.3, 4, 7, 5));  // 0.3 from the familiar rectangle
+    in.familiar.push_back(rect(4, 4, 6, 5));
+    EXPECT_TRUE(one_component(in).curved);
+  }
+  {
+    SemanticInput in = base;
+    in.movable.push_back(Disk{Point(9.5, 5), 0.25});  // 0.25 from the wall: a pocket
+    const FamiliarComponent c = one_component(in);
+    EXPECT_TRUE(c.curved);
+    EXPECT_TRUE(c.lid.has_value());
+  }
+  {
+    SemanticInput in = base;
+    in.familiar.push_back(rect(4, 4, 6, 5));
+    EXPECT_FALSE(one_component(in).curved);
+  }
+  {
+    SemanticInput in = base;
+    // An L whose foot touches the bottom wall: a pocket of familiar shapes only.
+    in.familiar.push_back(
+        Polygon{{Point(4, 0), Point(6, 0), Point(6, 1), Point(5, 1), Point(5, 3), Point(4, 3)}});
+    const FamiliarComponent c = one_component(in);
+    EXPECT_FALSE(c.curved);
+    EXPECT_TRUE(c.lid.has_value());
+  }
 }
 
 }  // namespace
