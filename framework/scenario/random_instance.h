@@ -96,7 +96,7 @@ struct InstanceSpec {
   GoalClass goal_class = GoalClass::kRandom;
   std::uint64_t seed = 0;
   double unknown_fraction = 0.5;   // probability that a new obstacle is unknown, in [0, 1]
-  // Unknown obstacles are ellipses (24-gons, aspect <= 1.5), strongly convex as the paper
+  // Unknown obstacles are ellipses (48-gons, aspect <= 1.5), strongly convex as the paper
   // assumes (§II); false: rectangles and hulls of 5-8 random points, whose flat faces break
   // that assumption (the reactive law can then stop in front of a face).
   bool round_unknown = true;

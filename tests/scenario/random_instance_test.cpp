@@ -403,7 +403,8 @@ TEST(RandomInstance, ObstacleKindsFollowUnknownFraction) {
         EXPECT_EQ(s.unknown[i].name, "C" + std::to_string(i + 1));
         const Polygon& p = s.unknown[i].polygon;
         for (std::size_t k = 0, m = p.size(); k < m; ++k) {
-          EXPECT_GE((p.vertices[(k + 1) % m] - p.vertices[k]).norm(), 0.05);  // no edge < 5 cm
+          // No edge under 5 cm (hulls, rectangles) or 2.6 cm (ellipses: 0.2 · 2 sin(π/48)).
+          EXPECT_GE((p.vertices[(k + 1) % m] - p.vertices[k]).norm(), round ? 0.026 : 0.05);
         }
         const std::vector<double> turns = turning_angles(p);
         double total = 0;
