@@ -222,19 +222,31 @@ double segment_distance(const Point& a, const Point& b, const Point& c, const Po
                    (geometry::nearest_on_segment(a, b, d) - d).norm()});
 }
 
-// Distance between two closed simple polygons (0 when they overlap or one contains the other).
-double polygon_distance(const Polygon& p, const Polygon& q) {
+// Whether two closed simple polygons are less than w apart (they overlap, one contains the
+// other, or two edges come closer than w). Edge pairs whose bounding boxes are >= w apart are
+// skipped: the box gap is a lower bound of the segments' distance, so the answer is the one
+// of the full O(n m) scan, at a cost proportional to the edges that face each other.
+bool closer_than(const Polygon& p, const Polygon& q, double w) {
   if (geometry::contains(q, p.vertices.front()) || geometry::contains(p, q.vertices.front())) {
-    return 0;
+    return true;
   }
-  double best = std::numeric_limits<double>::infinity();
+  auto edge_box = [](const Point& a, const Point& b) {
+    return Box{a.cwiseMin(b), a.cwiseMax(b)};
+  };
+  const Box qbox = bounding_box(q);
   for (std::size_t i = 0, n = p.size(); i < n; ++i) {
+    const Point& a = p.vertices[i];
+    const Point& b = p.vertices[(i + 1) % n];
+    const Box ebox = edge_box(a, b);
+    if (box_gap(ebox, qbox) >= w) continue;
     for (std::size_t j = 0, m = q.size(); j < m; ++j) {
-      best = std::min(best, segment_distance(p.vertices[i], p.vertices[(i + 1) % n], q.vertices[j],
-                                             q.vertices[(j + 1) % m]));
+      const Point& c = q.vertices[j];
+      const Point& d = q.vertices[(j + 1) % m];
+      if (box_gap(ebox, edge_box(c, d)) >= w) continue;
+      if (segment_distance(a, b, c, d) < w) return true;
     }
   }
-  return best;
+  return false;
 }
 
 // Distance from x to the closed axis-aligned square of side `side` centred at c.
@@ -412,7 +424,7 @@ class Generator {
     }
     if (!clear_of_point(robot_start_, w)) return false;
     for (const Obstacle& o : obstacles_) {
-      if (box_gap(box, o.box) < w && polygon_distance(p, o.polygon) < w) return false;
+      if (box_gap(box, o.box) < w && closer_than(p, o.polygon, w)) return false;
     }
     try {
       if (geometry::validated(p, "obstacle").vertices != p.vertices) return false;

@@ -533,7 +533,8 @@ TEST(CliTest, CompareAppendsRowsAndResumesWithoutDuplicates) {
   EXPECT_TRUE(contains(resumed.out, "2 already in")) << resumed.out;
   EXPECT_EQ(lines(slurp(dir + "/comparison.csv")).size(), 6u);  // the cut line stays alone, ignored
   // Other obstacle shapes are other rows: nothing is taken as already done.
-  const Result polygons = run(args + " --unknown-shapes polygon");
+  const Result polygons = run("compare --objects 1 --seeds 1 --classes cyclic --methods mrs "
+                              "--no-plot --unknown-shapes polygon --out " + dir);
   EXPECT_EQ(polygons.code, 0) << polygons.out;
   EXPECT_TRUE(contains(polygons.out, "0 already in")) << polygons.out;
   EXPECT_EQ(run("compare --unknown-shapes square").code, 2);

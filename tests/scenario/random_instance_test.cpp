@@ -17,6 +17,7 @@
 
 #include "core/error.h"
 #include "scenario/scenario_io.h"
+#include "support/scale.h"
 
 namespace rearm::scenario {
 namespace {
@@ -225,7 +226,7 @@ TEST(RandomInstance, ValidatesAndKeepsEveryClearanceAcrossTheSweep) {
   for (int n = 1; n <= 6; ++n) {
     for (const GoalClass c : kClasses) {
       for (const double density : {0.0, 0.1, 0.2}) {
-        for (std::uint64_t seed = 0; seed < 10; ++seed) {
+        for (std::uint64_t seed = 0; seed < test_support::scaled(10); ++seed) {
           const InstanceSpec spec = make_spec(n, c, density, seed);
           const Scenario s = random_instance(spec);
           EXPECT_NO_THROW(validate(s)) << s.name;
@@ -245,7 +246,7 @@ TEST(RandomInstance, ClearancesHoldForNonDefaultSizes) {
   spec.robot_radius = 0.3;
   spec.object_radius = 0.4;
   for (const GoalClass c : kClasses) {
-    for (std::uint64_t seed = 0; seed < 5; ++seed) {
+    for (std::uint64_t seed = 0; seed < test_support::scaled(5); ++seed) {
       spec.goal_class = c;
       spec.seed = seed;
       const Scenario s = random_instance(spec);
@@ -285,7 +286,7 @@ TEST(RandomInstance, SeedFixesObjectsAcrossClassesAndDensities) {
 
 TEST(RandomInstance, CyclicGoalIsTheNextObjectsStart) {
   for (int n = 1; n <= 8; ++n) {
-    for (std::uint64_t seed = 0; seed < 5; ++seed) {
+    for (std::uint64_t seed = 0; seed < test_support::scaled(5); ++seed) {
       const InstanceSpec spec = make_spec(n, GoalClass::kCyclic, 0.1, seed);
       const Scenario s = random_instance(spec);
       SCOPED_TRACE(s.name);
@@ -329,7 +330,7 @@ TEST(RandomInstance, DensityReachesTheTargetWithinOneObstacle) {
   for (const Case k : {Case{20, 0.1}, Case{10, 0.04}}) {
     for (int n = 1; n <= 3; ++n) {
       for (const GoalClass c : kClasses) {
-        for (std::uint64_t seed = 0; seed < 5; ++seed) {
+        for (std::uint64_t seed = 0; seed < test_support::scaled(5); ++seed) {
           InstanceSpec spec = make_spec(n, c, k.target, seed);
           spec.width = spec.height = k.side;
           const Scenario s = random_instance(spec);
