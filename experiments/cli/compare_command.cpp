@@ -55,9 +55,8 @@ constexpr const char* kUsage =
     "--out out/comparison\n";
 
 constexpr const char* kHeader =
-    "method,class,objects,density,unknown_shapes,achieved_density,rep,instance_seed,success,status,planning_time_"
-    "s,wall_time_s,"
-    "sim_time_s,robot_path_m,object_path_m,actions,fix_mode_entries,replans,collisions,"
+    "method,class,objects,density,unknown_shapes,achieved_density,rep,instance_seed,success,"
+    "status,planning_time_s,wall_time_s,sim_time_s,robot_path_m,object_path_m,actions,fix_mode_entries,replans,collisions,"
     "min_clearance,subqueries,nodes,goals_reached,host,revision";
 
 struct Trial {
@@ -68,6 +67,9 @@ struct Trial {
   std::uint64_t instance_seed;
   bool first_method = false;
 };
+
+// The unknown_shapes column (InstanceSpec::round_unknown).
+const char* shapes_name(bool round_unknown) { return round_unknown ? "round" : "polygon"; }
 
 // What identifies a row for resuming: the CSV's first seven fields but achieved_density.
 std::string row_key(const std::string& method, const std::string& goal_class,
@@ -140,7 +142,7 @@ std::string run_trial(const Trial& t, double density, bool round_unknown, double
   for (const auto& f : s.familiar) area += f.polygon.area();
   for (const auto& u : s.unknown) area += u.polygon.area();
   row << t.method << ',' << scenario::to_string(t.goal_class) << ',' << t.objects << ','
-      << fmt(density) << ',' << (round_unknown ? "round" : "polygon") << ','
+      << fmt(density) << ',' << shapes_name(round_unknown) << ','
       << fmt(area / s.workspace.area()) << ',' << t.rep << ','
       << t.instance_seed << ',';
   if (t.method == "rearm") {
@@ -186,7 +188,7 @@ int run_compare(const std::vector<std::string>& args) {
   std::uint64_t base_seed = 0;
   std::string out_dir = "out/comparison";
   bool plot = true;
-  std::string shapes = "round";
+  bool round_unknown = true;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     if (a == "--help" || a == "-h") {
@@ -221,9 +223,10 @@ int run_compare(const std::vector<std::string>& args) {
     } else if (a == "--out") {
       out_dir = option_value(args, i);
     } else if (a == "--unknown-shapes") {
-      shapes = option_value(args, i);
+      const std::string shapes = option_value(args, i);
       if (shapes != "round" && shapes != "polygon")
         throw Error("--unknown-shapes expects round or polygon, got '" + shapes + "'");
+      round_unknown = shapes == "round";
     } else if (a == "--no-plot") {
       plot = false;
     } else {
@@ -276,7 +279,7 @@ int run_compare(const std::vector<std::string>& args) {
   std::vector<Trial> todo;
   auto key = [&](const Trial& t) {
     return row_key(t.method, scenario::to_string(t.goal_class), std::to_string(t.objects),
-                   fmt(density), shapes, std::to_string(t.rep), std::to_string(t.instance_seed));
+                   fmt(density), shapes_name(round_unknown), std::to_string(t.rep), std::to_string(t.instance_seed));
   };
   for (const auto& t : trials)
     if (!done.count(key(t))) todo.push_back(t);
@@ -292,7 +295,7 @@ int run_compare(const std::vector<std::string>& args) {
       if (k >= todo.size()) return;
       std::string row;
       try {
-        row = run_trial(todo[k], density, shapes == "round", time_limit, host, instances);
+        row = run_trial(todo[k], density, round_unknown, time_limit, host, instances);
       } catch (const std::exception& e) {
         const std::lock_guard<std::mutex> lock(mu);
         error = key(todo[k]) + ": " + e.what();

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <numbers>
 #include <string>
 #include <utility>
 
@@ -362,9 +361,9 @@ Executive::Advance Executive::advance(Activity& a, const Pose& pose, double t, d
       return out;
     case Phase::kBackOff: {
       const geometry::Disk m = *map_.object(a.object);
-      const double need = (m.radius + r + geometry::kContactSlack) /
-                              std::cos(std::numbers::pi / geometry::kDiskPolygonSides) +
-                          p_.backoff_margin;
+      const double need =
+          geometry::disk_polygon_circumradius(m.radius + r + geometry::kContactSlack) +
+          p_.backoff_margin;
       const double d = (m.center - pose.x).norm();
       if (d >= need) {
         out.kind = Advance::kDone;

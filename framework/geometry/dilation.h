@@ -10,6 +10,9 @@
 //    sqrt(kMiterLimit² + 1)·r at bevelled corners.
 #pragma once
 
+#include <cmath>
+#include <numbers>
+
 #include "geometry/convex.h"
 #include "geometry/polygon.h"
 
@@ -40,6 +43,10 @@ inline constexpr double kContactSlack = 1e-9;
 
 // A disk as its circumscribed kDiskPolygonSides-gon (radius finite and > 0, else rearm::Error).
 Polygon disk_polygon(const Disk& d);
+// The circumradius of disk_polygon for a disk of radius r: the disk that holds the polygon.
+inline double disk_polygon_circumradius(double r) {
+  return r / std::cos(std::numbers::pi / kDiskPolygonSides);
+}
 
 // The workspace eroded by r: W minus the union of thick segments (hulls of two circumscribed
 // disk polygons) around its edges; a subset of the exact erosion (conservative). The

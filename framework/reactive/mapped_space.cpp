@@ -1,9 +1,9 @@
 // Semantic → mapped space (docs/reactive.md §2, paper Appendix III's freespace components).
 #include "reactive/mapped_space.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numbers>
 #include <string>
 
 #include "core/error.h"
@@ -211,9 +211,8 @@ MappedSpace build_mapped_space(const SemanticInput& in, double radius, const Poi
         // ρ + r + kContactSlack): the navigation law then keeps the robot outside the very
         // polygon that the next rebuild's freespace excludes.
         const Disk& d = in.movable[last->index];
-        m.movable.push_back(
-            Disk{d.center, (d.radius + radius + kContactSlack) /
-                               std::cos(std::numbers::pi / geometry::kDiskPolygonSides)});
+        m.movable.push_back(Disk{
+            d.center, geometry::disk_polygon_circumradius(d.radius + radius + kContactSlack)});
       }
       continue;
     }
@@ -233,10 +232,9 @@ MappedSpace build_mapped_space(const SemanticInput& in, double radius, const Poi
           "mapped space: a pocket of the freespace's convex hull has no edge on the hull "
           "(internal error; please report the scene)");
     }
-    bool curved = false;
-    for (const Source& s : sources) {
-      curved = curved || (s.kind != Kind::kFamiliar && geometry::contains(r.outer, s.rep));
-    }
+    const bool curved = std::any_of(sources.begin(), sources.end(), [&](const Source& s) {
+      return s.kind != Kind::kFamiliar && geometry::contains(r.outer, s.rep);
+    });
     m.familiar.push_back(FamiliarComponent{std::move(pocket), lid, curved});
   }
   return m;
