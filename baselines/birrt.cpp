@@ -47,7 +47,7 @@ class Birrt {
         planner_(p, params),
         o_(o),
         b_(b),
-        ctx_(o.time_limit, o.seed),
+        ctx_(o.time_limit, o.seed, o.max_queries),
         rng_(Rng::derive(o.seed, kSamplerStream)) {
     ctx_.iterations_per_query = o.iterations_per_query;
     no_regions_.assign(p.object_count(), std::nullopt);
@@ -76,9 +76,15 @@ class Birrt {
     out.subqueries = ctx_.subqueries;
     out.arrangement_nodes = static_cast<long>(start_.size() + goal_.size());
     out.nodes = ctx_.nodes + out.arrangement_nodes;
+    out.queries = ctx_.queries;
     if (solved) {
       out.status = PlanStatus::kSolved;
       out.plan = std::move(plan_);
+    } else if (ctx_.out_of_queries()) {
+      out.status = PlanStatus::kUnsolved;
+      out.reason = "query limit of " + std::to_string(ctx_.max_queries()) + " reached after " +
+                   std::to_string(iterations_) + " iterations (" + std::to_string(start_.size()) +
+                   " + " + std::to_string(goal_.size()) + " arrangement nodes)";
     } else {
       out.status = PlanStatus::kTimeout;
       out.reason = "time limit of " + seconds_text(o_.time_limit) + " reached after " +

@@ -118,7 +118,9 @@ const char* to_string(QueryStatus s) {
   return "?";
 }
 
-QueryContext::QueryContext(double time_limit, std::uint64_t seed) : seed_(seed) {
+QueryContext::QueryContext(double time_limit, std::uint64_t seed, long max_queries)
+    : seed_(seed), max_queries_(max_queries) {
+  if (max_queries < 0) throw Error("the query limit must be >= 0");
   if (!std::isfinite(time_limit) || time_limit <= 0)
     throw Error("time limit must be a positive finite number of seconds");
   start_ = Clock::now();
@@ -159,6 +161,11 @@ QueryResult plan_motion(const DiskWorld& world, const std::vector<geometry::Disk
     out.status = QueryStatus::kGoalInvalid;
     return out;
   }
+  if (ctx.out_of_queries()) {
+    out.status = QueryStatus::kTimeout;
+    return out;
+  }
+  ++ctx.queries;
   if (free(start, goal)) {  // the straight segment: no sampling needed
     out.status = QueryStatus::kSolved;
     out.path = {start, goal};

@@ -25,12 +25,17 @@ class QueryContext {
  public:
   using Clock = std::chrono::steady_clock;
   // time_limit in s (> 0, finite); seed: the trial's.
-  QueryContext(double time_limit, std::uint64_t seed);
-  bool expired() const { return Clock::now() >= deadline_; }
+  // max_queries: the query budget (0: none), PlannerOptions::max_queries.
+  QueryContext(double time_limit, std::uint64_t seed, long max_queries = 0);
+  // The time limit passed, or the query budget is spent.
+  bool expired() const { return out_of_queries() || Clock::now() >= deadline_; }
+  bool out_of_queries() const { return max_queries_ > 0 && queries >= max_queries_; }
+  long max_queries() const { return max_queries_; }
   double remaining() const;  // s, >= 0
   double elapsed() const;    // s since construction
   // The next query's seed: a function of the trial seed and the query's index only.
   std::uint32_t next_seed();
+  long queries = 0;                  // motion queries, straight-line checks included
   long subqueries = 0;               // motion queries posed to OMPL
   long nodes = 0;                    // states in their trees, summed
   int iterations_per_query = 20000;  // RRTConnect iterations before a query gives up
@@ -39,6 +44,7 @@ class QueryContext {
   Clock::time_point start_, deadline_;
   std::uint64_t seed_;
   std::uint64_t counter_ = 0;
+  long max_queries_ = 0;
 };
 
 // "1 s", "0.25 s": a duration for messages.

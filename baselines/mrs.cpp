@@ -113,7 +113,7 @@ MonotoneResult monotone_search(const MovePlanner& planner, const Arrangement& a,
 
 PlanResult plan_mrs(const RearrangementProblem& problem, const BaselineParams& params,
                     const PlannerOptions& options) {
-  QueryContext ctx(options.time_limit, options.seed);
+  QueryContext ctx(options.time_limit, options.seed, options.max_queries);
   ctx.iterations_per_query = options.iterations_per_query;
   const MovePlanner planner(problem, params);
   std::vector<std::size_t> which;
@@ -127,11 +127,15 @@ PlanResult plan_mrs(const RearrangementProblem& problem, const BaselineParams& p
   out.planning_time_s = ctx.elapsed();
   out.subqueries = ctx.subqueries;
   out.nodes = ctx.nodes;
+  out.queries = ctx.queries;
   if (m.solved) {
     out.status = PlanStatus::kSolved;
     out.plan.moves = m.moves;
     out.plan.final_transit = m.final_transit;
     out.plan.final_arrangement = m.reached;
+  } else if (m.timeout && ctx.out_of_queries()) {
+    out.status = PlanStatus::kUnsolved;
+    out.reason = "query limit of " + std::to_string(ctx.max_queries()) + " reached";
   } else if (m.timeout) {
     out.status = PlanStatus::kTimeout;
     out.reason = "time limit of " + seconds_text(options.time_limit) + " reached";

@@ -22,6 +22,11 @@ struct PlannerOptions {
   double time_limit = 10.0;  // s of wall time for the whole trial (> 0)
   std::uint64_t seed = 0;
   int iterations_per_query = 20000;  // RRTConnect iterations before one query gives up
+  // Motion queries (transit and transfer, straight-line checks included) before the search
+  // gives up (0: no limit; QueryContext::max_queries). Unlike time_limit it is a
+  // deterministic budget: a search it ends gives the same result on any machine and at any
+  // load, which the Monte Carlo sweeps need (their rows must not depend on the thread count).
+  long max_queries = 0;
 };
 
 // The monotone search from arrangement `a` (robot at `robot`; nullopt: transits left to the

@@ -56,6 +56,7 @@ struct PlanResult {
   long subqueries = 0;  // OMPL motion queries (transit and transfer) posed
   long nodes = 0;       // states in every RRTConnect tree, summed (+ arrangement nodes for B2)
   long arrangement_nodes = 0;  // B2's two arrangement trees, summed
+  long queries = 0;            // motion queries, straight-line checks included
 };
 
 }  // namespace rearm::baselines

@@ -24,9 +24,10 @@ double seconds_since(Clock::time_point t0) {
 }
 
 PlanResult plan_with(Method m, const RearrangementProblem& p, const BaselineOptions& o,
-                     double time_limit, std::uint64_t seed) {
+                     double time_limit, std::uint64_t seed, long queries_used = 0) {
   PlannerOptions po;
   po.time_limit = time_limit;
+  po.max_queries = o.query_limit == 0 ? 0 : std::max(1L, o.query_limit - queries_used);
   po.seed = seed;
   po.iterations_per_query = o.iterations_per_query;
   return m == Method::kMrs ? plan_mrs(p, o.params, po) : plan_birrt(p, o.params, po, o.birrt);
@@ -45,6 +46,7 @@ void take_plan_stats(BaselineRecord& r, const PlanResult& p) {
   r.subqueries += p.subqueries;
   r.nodes += p.nodes;
   r.arrangement_nodes += p.arrangement_nodes;
+  r.queries += p.queries;
   r.plan_status = p.status;
 }
 
@@ -158,7 +160,8 @@ void run_replanning(const scenario::Scenario& s, const RearrangementProblem& ful
     if (exec.held() && current_move) {
       // Continue the interrupted transfer: one transfer query from the pair's centre.
       const std::size_t i = *exec.held();
-      QueryContext ctx(budget, seed);
+      QueryContext ctx(budget, seed,
+                       o.query_limit == 0 ? 0 : std::max(1L, o.query_limit - r.queries));
       ctx.iterations_per_query = o.iterations_per_query;
       const MovePlanner mp(sub, o.params);
       const double ell = pair_offset(sub.object_radii[i], o.params);
@@ -169,6 +172,7 @@ void run_replanning(const scenario::Scenario& s, const RearrangementProblem& ful
                                   to_goal ? region : std::nullopt, ctx);
       r.planning_time_s += ctx.elapsed();
       r.subqueries += ctx.subqueries;
+      r.queries += ctx.queries;
       r.nodes += ctx.nodes;
       if (!c.move) {
         r.status = c.failure == MoveFailure::kTimeout ? "timeout" : "unsolved";
@@ -187,7 +191,13 @@ void run_replanning(const scenario::Scenario& s, const RearrangementProblem& ful
       r.reason = "planning time limit reached";
       break;
     }
-    const PlanResult pr = plan_with(Method::kBirrt, sub, o, rest_budget, seed);
+    if (o.query_limit > 0 && r.queries >= o.query_limit) {
+      r.status = "unsolved";
+      r.reason = "query limit of " + std::to_string(o.query_limit) + " reached after " +
+                 std::to_string(r.replans) + " replans";
+      break;
+    }
+    const PlanResult pr = plan_with(Method::kBirrt, sub, o, rest_budget, seed, r.queries);
     take_plan_stats(r, pr);
     if (pr.status != PlanStatus::kSolved) {
       set_status_from_plan(r, pr);
@@ -271,6 +281,7 @@ BaselineRecord run_baseline(const scenario::Scenario& s, const BaselineOptions& 
   if (!std::isfinite(o.time_limit) || o.time_limit <= 0)
     throw Error("baseline: the time limit must be a positive finite number of seconds");
   if (o.iterations_per_query < 1) throw Error("baseline: iterations per query must be >= 1");
+  if (o.query_limit < 0) throw Error("baseline: the query limit must be >= 0");
   const Clock::time_point t0 = Clock::now();
   const RearrangementProblem p = problem_from_scenario(s);
   BaselineRecord r;

@@ -34,6 +34,9 @@ struct BaselineOptions {
   BaselineParams params;
   BirrtOptions birrt;
   int iterations_per_query = 20000;
+  // Motion queries for the whole trial, all replans together (0: no limit;
+  // PlannerOptions::max_queries): the deterministic budget of the Monte Carlo sweeps.
+  long query_limit = 0;
 };
 
 struct BaselineRecord {
@@ -53,7 +56,7 @@ struct BaselineRecord {
   ExecutionLog execution;
   int replans = 0;
   double planning_time_s = 0;  // summed over replans
-  long subqueries = 0, nodes = 0, arrangement_nodes = 0;
+  long subqueries = 0, nodes = 0, arrangement_nodes = 0, queries = 0;
   double wall_time_s = 0;  // planning + validation + execution
 };
 

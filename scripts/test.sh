@@ -12,6 +12,11 @@ cmake -S . -B "$BUILD" -DCMAKE_BUILD_TYPE=Release -DREARM_WERROR=ON -DREARM_SANI
 cmake --build "$BUILD" -j"$JOBS"
 ctest --test-dir "$BUILD" --no-tests=error --output-on-failure -j"$JOBS"
 
+# The Slurm recipe on a real single-node Slurm (slurm-wlm and munge, started and stopped by the
+# script): the smoke sweep as a 3-task job array, merged, equal row for row to the unsharded
+# run. About 40 s.
+REARM="$BUILD/bin/rearm" bash experiments/slurm/check_local.sh
+
 # Sanitized run of the tests that feed arbitrary input (parser fuzzing, automaton readers,
 # the command line, scene and perception input), of the translator's and controller's
 # property tests, of the geometry and reactive tests and of the baselines (OMPL, Box2D
@@ -27,7 +32,7 @@ ASAN_TESTS+=";grasp_test;kinematics_test;closed_loop_test;topology_check_test;to
 ASAN_TESTS+=";progress_monitor_test;kinematic_plant_test;interface_layer_test;executive_test;end_to_end_test"
 ASAN_TESTS+=";scenario_io_test;convex_pieces_test;sim_world_test;json_writer_test;file_io_test;run_scenario_test"
 ASAN_TESTS+=";random_instance_test;motion_query_test;planners_test;executor_test;validator_test"
-ASAN_TESTS+=";run_baseline_test"
+ASAN_TESTS+=";run_baseline_test;solvability_test;sweep_file_test;sweep_plan_test;trial_log_test"
 cmake -S . -B "$ASAN_BUILD" -DCMAKE_BUILD_TYPE=Debug -DREARM_SANITIZE=ON -DREARM_WERROR=ON \
   -DREARM_BUILD_TESTS=ON -DREARM_BUILD_BENCH=OFF "-DREARM_TESTS=$ASAN_TESTS"
 cmake --build "$ASAN_BUILD" -j"$JOBS"

@@ -42,7 +42,7 @@ namespace fs = std::filesystem;
 
 constexpr const char* kUsage =
     "usage: rearm baseline SCENARIO.yaml --method mrs|birrt|replan [--time-limit S] [--seed N]\n"
-    "                      [--out DIR] [--stride N] [--no-execute] [--no-plot]\n"
+    "                      [--queries K] [--out DIR] [--stride N] [--no-execute] [--no-plot]\n"
     "                      [--no-animation]\n\n"
     "Solves the scenario's rearrangement (every release(M,l) of its task: M ends inside l;\n"
     "a move(l): the robot ends in l) with a sampling-based baseline on OMPL's RRTConnect:\n"
@@ -57,6 +57,8 @@ constexpr const char* kUsage =
     "figure and animation (experiments/plot/run.py). DIR defaults to out/<scenario>-<method>.\n"
     "  --time-limit S  planning time budget of the trial (s, default 10)\n"
     "  --seed N        seeds every sampler and planner (default 0)\n"
+    "  --queries K     motion queries for the trial, all replans together (default 0: no\n"
+    "                  limit); a budget that, unlike the time limit, binds the same anywhere\n"
     "Exit: 0 when the plan was executed with every goal reached, 1 when the method failed\n"
     "(infeasible, unsolved, timeout, execution failure), 2 for bad usage or input.\n";
 
@@ -75,6 +77,8 @@ int run_baseline(const std::vector<std::string>& args) {
     } else if (a == "--method") {
       o.method = baselines::method_from_string(option_value(args, i));
       have_method = true;
+    } else if (a == "--queries") {
+      o.query_limit = static_cast<long>(parse_count(a, option_value(args, i)));
     } else if (a == "--time-limit") {
       o.time_limit = parse_number(a, option_value(args, i));
       if (o.time_limit <= 0) throw Error("--time-limit must be positive");

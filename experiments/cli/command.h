@@ -21,7 +21,7 @@ int run_plan(const std::vector<std::string>& args);
 int run_diffeo(const std::vector<std::string>& args);
 int run_run(const std::vector<std::string>& args);
 int run_baseline(const std::vector<std::string>& args);
-int run_compare(const std::vector<std::string>& args);
+int run_sweep(const std::vector<std::string>& args);
 
 // Exit codes: 0 success, 1 a clean failure of the requested work (e.g. budget exceeded),
 // 2 bad usage or bad input.

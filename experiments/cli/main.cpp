@@ -18,8 +18,8 @@ const Command kCommands[] = {
      &rearm::cli::run_run},
     {"baseline", "plan and execute a scenario with an OMPL rearrangement baseline (mRS, BiRRT)",
      &rearm::cli::run_baseline},
-    {"compare", "rearm vs the baselines on random instances (table and plot)",
-     &rearm::cli::run_compare},
+    {"sweep", "Monte Carlo sweeps of rearm and the baselines (run, merge, report)",
+     &rearm::cli::run_sweep},
 };
 
 void print_help() {

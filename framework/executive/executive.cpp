@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "core/error.h"
+#include "core/stopwatch.h"
 #include "geometry/dilation.h"
 #include "reactive/grasp.h"
 #include "reactive/navigation.h"
@@ -176,7 +177,11 @@ bool Executive::fetch_ltl(double t) {
     }
     return false;
   }
-  const std::optional<symbolic::Action> next = mission_.next_action();
+  std::optional<symbolic::Action> next;
+  {
+    const ScopedStopwatch sw(times_.mission_s);
+    next = mission_.next_action();
+  }
   if (!next) {
     switch (mission_.status()) {
       case symbolic::MissionStatus::Infeasible:
@@ -411,8 +416,11 @@ Executive::Advance Executive::navigate(Activity& a, const Pose& pose, double t, 
   const Point target = *a.target;
   if (!a.built || a.built_version != map_.version() || a.built_target != target ||
       a.built_radius != radius) {
-    const reactive::RebuildResult rr =
-        controller_.try_rebuild(semantic_input(), radius, center, target);
+    reactive::RebuildResult rr;
+    {
+      const ScopedStopwatch sw(times_.rebuild_s);
+      rr = controller_.try_rebuild(semantic_input(), radius, center, target);
+    }
     if (rr.status == reactive::RebuildStatus::kCenterNotFree) {
       out.kind = Advance::kStuck;
       out.reason = rr.message;
@@ -497,10 +505,7 @@ Executive::Advance Executive::plan(Activity& a, const Pose& pose) {
   if (a.kind == Kind::kDisassemble) {
     // Paper §V-B: x* is the midpoint of an edge of the pair's freespace F; kept while it stays
     // in F so the target does not jump as the map grows.
-    const topology::TopologyInput in =
-        topology::make_input(map_.workspace(), map_.familiar(), map_.movable(), radius, center,
-                             center, std::nullopt, topology_cache_);
-    const topology::TopologyResult res = topology::check_topology(in, topology_cache_);
+    const topology::TopologyResult res = timed_check(radius, center, center);
     ++topology_checks_;
     if (!a.target || !geometry::contains(res.freespace, *a.target)) {
       a.target = disassemble_target(res.freespace, map_, a.object, regions_, radius);
@@ -515,10 +520,7 @@ Executive::Advance Executive::plan(Activity& a, const Pose& pose) {
   }
 
   const Point target = region_target(region(a.region));
-  const topology::TopologyInput in =
-      topology::make_input(map_.workspace(), map_.familiar(), map_.movable(), radius, center,
-                           target, std::nullopt, topology_cache_);
-  const topology::TopologyResult res = topology::check_topology(in, topology_cache_);
+  const topology::TopologyResult res = timed_check(radius, center, target);
   ++topology_checks_;
   a.target = target;
   switch (res.verdict) {
@@ -558,15 +560,15 @@ Executive::Advance Executive::plan_grasp(Activity& a, const Pose& pose) {
   // Exact freespaces: the robot's (every object an obstacle) and the pair's once gripped (the
   // object carried, radius r + ρ_i + pair_margin).
   // F from the topology check with x* = x (throws when the robot is not in its freespace).
-  const topology::TopologyResult here = topology::check_topology(
-      topology::make_input(map_.workspace(), map_.familiar(), map_.movable(), r, pose.x, pose.x,
-                           std::nullopt, topology_cache_),
-      topology_cache_);
+  const topology::TopologyResult here = timed_check(r, pose.x, pose.x);
   const geometry::Region* f = &here.freespace;
   const Point c = map_.movable()[index].center;
-  const geometry::RegionSet pair_free = freespace_of(
-      topology::make_input(map_.workspace(), map_.familiar(), map_.movable(),
-                           r + rho + p_.grasp.pair_margin, c, c, index, topology_cache_));
+  const geometry::RegionSet pair_free = [&] {
+    const ScopedStopwatch sw(times_.topology_s);
+    return freespace_of(topology::make_input(map_.workspace(), map_.familiar(), map_.movable(),
+                                             r + rho + p_.grasp.pair_margin, c, c, index,
+                                             topology_cache_));
+  }();
   topology_checks_ += 2;
   const GraspCandidate* reachable = nullptr;
   const GraspCandidate* fallback = nullptr;
@@ -586,10 +588,7 @@ Executive::Advance Executive::plan_grasp(Activity& a, const Pose& pose) {
   a.target = (reachable != nullptr ? reachable : fallback)->approach;
   if (reachable == nullptr) {
     // Paper §IV: the approach point is not in F; the topology check says why.
-    const topology::TopologyResult res = topology::check_topology(
-        topology::make_input(map_.workspace(), map_.familiar(), map_.movable(), r, pose.x,
-                             *a.target, std::nullopt, topology_cache_),
-        topology_cache_);
+    const topology::TopologyResult res = timed_check(r, pose.x, *a.target);
     ++topology_checks_;
     if (res.verdict == topology::Verdict::kBlockedByFixed) {
       out.kind = Advance::kInfeasible;
@@ -673,7 +672,10 @@ void Executive::end_current(ActionOutcome outcome, const std::string& reason, do
       if (ltl_) {
         log_.push_back(ActionRecord{ltl_->name(), false, ActionOutcome::kInfeasible, why,
                                     ltl_->t_start, t, ltl_->interruptions, ltl_->target});
-        mission_.report_infeasible(ltl_->ltl);
+        {
+          const ScopedStopwatch sw(times_.mission_s);
+          mission_.report_infeasible(ltl_->ltl);
+        }
         ltl_.reset();
       }
     }
@@ -686,12 +688,23 @@ void Executive::end_current(ActionOutcome outcome, const std::string& reason, do
     return;
   }
   if (outcome == ActionOutcome::kSucceeded) {
+    const ScopedStopwatch sw(times_.mission_s);
     mission_.report_success();
     ++ltl_done_;
   } else if (outcome == ActionOutcome::kInfeasible) {
+    const ScopedStopwatch sw(times_.mission_s);
     mission_.report_infeasible(ltl_->ltl);
   }
   ltl_.reset();
+}
+
+topology::TopologyResult Executive::timed_check(double radius, const Point& x,
+                                                const Point& target) {
+  const ScopedStopwatch sw(times_.topology_s);
+  const topology::TopologyInput in =
+      topology::make_input(map_.workspace(), map_.familiar(), map_.movable(), radius, x, target,
+                           std::nullopt, topology_cache_);
+  return topology::check_topology(in, topology_cache_);
 }
 
 void Executive::finish(TaskStatus status, const std::string& reason, double t) {

@@ -93,6 +93,17 @@ struct Command {
   std::string object;  // the object to close on
 };
 
+// Wall time (s) the executive spent in each part of its work, for the compute split of a run:
+// the mission controller's decisions and reports (paper §III), the topology checks and the
+// freespaces the interface layer derives from them (Appendix III), and the diffeomorphism
+// rebuilds of the reactive controller ([7], Appendix II). The rest of Executive::step is
+// control (the law's evaluation, phases, targets).
+struct ComputeTimes {
+  double mission_s = 0;
+  double topology_s = 0;
+  double rebuild_s = 0;
+};
+
 class Executive {
  public:
   // Validates the parameters and the regions (against the map's workspace). The mission
@@ -121,6 +132,7 @@ class Executive {
   int ltl_actions_completed() const { return ltl_done_; }
   int topology_checks() const { return topology_checks_; }
   int rebuilds() const { return controller_.rebuilds(); }
+  const ComputeTimes& compute_times() const { return times_; }
   bool in_fix_mode() const { return !fix_.empty(); }
   // "move(l1)" etc., or "" when idle.
   std::string current_action() const;
@@ -176,6 +188,9 @@ class Executive {
   void enter_fix(const std::vector<std::string>& blocking, double t);
   void finish(TaskStatus status, const std::string& reason, double t);
   reactive::SemanticInput semantic_input() const;
+  // The topology check of Appendix III for a disk of `radius` at x and the target (no carried
+  // object excluded), its time added to times_.topology_s.
+  topology::TopologyResult timed_check(double radius, const Point& x, const Point& target);
   const RegionOfInterest& region(const std::string& id) const;
   double object_radius(const std::string& id) const;
   bool knowledge_changed(const Activity& a) const;
@@ -194,6 +209,7 @@ class Executive {
   int fix_entries_ = 0;
   int ltl_done_ = 0;
   int topology_checks_ = 0;
+  ComputeTimes times_;
   GripperAction gripper_ = GripperAction::kNone;
   std::string gripper_object_;
   std::vector<ActionRecord> log_;

@@ -36,7 +36,9 @@ TaskResult run_task(const TaskSpec& spec, Plant& plant, const TaskOptions& o) {
   for (const auto& m : world.movable) mo.vocabulary.objects.push_back(m.id);
   for (const auto& r : spec.regions) mo.vocabulary.regions.push_back(r.id);
   mo.translate = spec.translate;
+  const Clock::time_point mission_start = Clock::now();
   symbolic::MissionController mission(ltl::parse(spec.formula), mo);
+  const double mission_setup = seconds_since(mission_start);
   perception::SemanticMap map(world, perception::Sensor(spec.sensor), spec.map_tolerances);
   Executive exec(spec.executive, spec.regions, mission, map);
 
@@ -100,6 +102,12 @@ TaskResult run_task(const TaskSpec& spec, Plant& plant, const TaskOptions& o) {
   res.sim_time = t;
   res.rebuilds = exec.rebuilds();
   res.topology_checks = exec.topology_checks();
+  const ComputeTimes& ct = exec.compute_times();
+  res.mission_time = mission_setup + ct.mission_s;
+  res.topology_time = ct.topology_s;
+  res.rebuild_time = ct.rebuild_s;
+  res.control_time =
+      std::max(0.0, res.controller_time - ct.mission_s - ct.topology_s - ct.rebuild_s);
   res.wall_time = seconds_since(wall_start);
   return res;
 }

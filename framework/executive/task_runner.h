@@ -47,6 +47,16 @@ struct TaskResult {
   double robot_path_length = 0;   // m
   double object_path_length = 0;  // m, summed over objects
   double controller_time = 0;     // s of wall time inside Executive::step
+  // The compute split (s of wall time): the mission controller (building the automaton, G and
+  // d_F before the first step, then its decisions), the topology checks, the diffeomorphism
+  // rebuilds, and the rest of Executive::step (control). They add up to compute_time().
+  double mission_time = 0;
+  double topology_time = 0;
+  double rebuild_time = 0;
+  double control_time = 0;
+  double compute_time() const {
+    return mission_time + topology_time + rebuild_time + control_time;
+  }
   double wall_time = 0;           // s of wall time for the whole run
   int rebuilds = 0;
   int topology_checks = 0;

@@ -1,10 +1,11 @@
-// random_instance() of random_instance.h: rejection sampling of the Monte Carlo instances
-// (docs/experiments.md, "Monte Carlo runner", classes a and b). Placement order: object starts,
-// goal points, robot start, then obstacles, so that the obstacle density never makes a required
-// placement impossible; an obstacle is accepted only when it keeps every clearance of the
-// header's solvability argument. Clearance tests are doubles with the margins of the header
-// (accept-or-retry decisions, re-checked by scenario::validate); polygon validity is checked
-// with the exact predicates of geometry::validated.
+// generate_instance() of random_instance.h: rejection sampling of the Monte Carlo instances
+// (classes random, cyclic and sealed). Placement order: the sealed pocket, object starts, goal
+// points, robot start, parking spot, then obstacles, so that the obstacle density never makes a
+// required placement impossible; an obstacle is accepted only when it keeps every clearance of
+// the header and the pair raster's connectivity (pair_raster.h). Clearance tests are doubles
+// (accept-or-retry decisions); polygon validity uses the exact predicates of
+// geometry::validated, and the finished instance passes scenario::validate and the exact
+// certificate of solvability.h.
 #include "scenario/random_instance.h"
 
 #include <algorithm>
@@ -16,14 +17,18 @@
 #include <optional>
 #include <string>
 #include <system_error>
+#include <utility>
 #include <vector>
 
 #include "core/error.h"
 #include "core/rng.h"
+#include "geometry/boolean.h"
 #include "geometry/convex.h"
 #include "geometry/distance.h"
 #include "geometry/polygon.h"
+#include "scenario/pair_raster.h"
 #include "scenario/scenario_io.h"
+#include "scenario/solvability.h"
 
 namespace rearm::scenario {
 namespace {
@@ -65,22 +70,57 @@ constexpr double kMinHullEdge = 0.05;
 // minor axis, a²/b, within 3.4 times the semi-major axis.
 constexpr int kEllipseSides = 48;
 constexpr double kMaxEllipseAspect = 1.5;
-// Among this many acceptable poses of a new obstacle the largest is kept. Every obstacle costs
-// a w-wide passage around it, so uniform sequential placement jams early (about 0.05 in the
-// default 10 x 10 m instance); preferring large obstacles roughly doubles the density reached
-// (measured over 40 seeds, N = 1..12), and 30 gets most of the gain of 100 at a third the cost.
-constexpr int kCandidatesPerObstacle = 30;
+// Up to this many poses of a new obstacle that pass the cheap tests are drawn; the largest that
+// keeps the raster certificate is kept (large obstacles reach a density with fewer raster
+// checks). Clusters make the old preference of 30 unnecessary; 4 keeps generation fast.
+constexpr int kCandidatesPerObstacle = 4;
+// m: an overlap between two obstacles is accepted only this deep (a vertex of one lies this far
+// inside the other), so clusters have no sliver-thin seams.
+constexpr double kMinOverlapDepth = 0.05;
+// m: a snapped obstacle is moved this far past contact into its neighbour (> kMinOverlapDepth,
+// so that the overlap passes the depth test for most shapes).
+constexpr double kSnapDepth = 0.15;
+// Clipped familiar rectangles (touching the boundary): shortest edge (as hulls) and least area.
+constexpr double kMinClippedArea = 0.1;  // m²
+constexpr double kWallSnap = 1e-9;       // m: clipped vertices this close to a wall lie on it
+
+// Clearances (random_instance.h, "Clearances").
+constexpr double kGraspMargin = 0.05;      // m: cg beyond 2r + ρ
+constexpr double kDenseWallGap = 0.1;      // m: dense cb beyond ρ
+constexpr double kDenseRegionGap = 0.05;   // m: dense Chebyshev spacing beyond s
+constexpr double kMinRegionMargin = 0.05;  // m: the smallest region side is 2ρ + this
+// Share of the points' area that n points of spacing d may claim (d² each) before the dense
+// rules apply: random sequential placement of squares jams near 0.56, so 0.45 keeps rejection
+// sampling quick.
+constexpr double kPackingFraction = 0.45;
+constexpr double kObstacleObjectGap = 0.02;  // m: obstacle to blocker disk
+
+// A new obstacle must add at least this share of its area to the union (measured on a coverage
+// grid of kRasterCell cells): piling obstacles onto clusters would reach a density only with
+// hundreds of them.
+constexpr double kMinNewShare = 0.25;
+
+// Raster of the pair freespace (pair_raster.h).
+constexpr double kRasterCell = 0.05;           // m
+constexpr std::size_t kMaxRasterCells = 250'000;
+
+// Sealed pocket (random_instance.h, "Sealed pocket").
+constexpr double kWallThickness = 0.2;  // m
+constexpr double kMinStub = 0.1;        // m: front wall beside the mouth, at least
+constexpr int kMaxRedraws = 3;
+constexpr std::uint64_t kRedrawStreamStride = 100;
 
 // Simulated seconds: a base plus a share per object (each needs a grasp, a carry, a release).
 constexpr double kBaseTimeBudget = 600;
 constexpr double kTimeBudgetPerObject = 300;
 
-// Rng::derive streams: independent draws for each placement stage (random_instance.h,
-// "Determinism").
+// Rng::derive streams (random_instance.h, "Determinism").
 constexpr std::uint64_t kStartsStream = 1;
 constexpr std::uint64_t kGoalsStream = 2;
 constexpr std::uint64_t kRobotStream = 3;
 constexpr std::uint64_t kObstaclesStream = 4;
+constexpr std::uint64_t kPocketStream = 5;
+constexpr std::uint64_t kParkingStream = 6;
 
 // The shortest decimal that reads back to x.
 std::string num(double x) {
@@ -116,26 +156,89 @@ void check_fraction(double x, const char* field, double max) {
   }
 }
 
+Polygon rectangle(double x0, double y0, double x1, double y1) {
+  return Polygon{{Point(x0, y0), Point(x1, y0), Point(x1, y1), Point(x0, y1)}};
+}
+
+double footprint_area(const InstanceSpec& spec) {
+  const int objects = spec.objects + (spec.goal_class == GoalClass::kSealed ? 1 : 0);
+  return objects * std::numbers::pi * spec.object_radius * spec.object_radius;
+}
+
+// The workspace sides (random_instance.h: width x height, or the footprint square).
+Point workspace_size(const InstanceSpec& spec) {
+  if (spec.footprint_density == 0) return Point(spec.width, spec.height);
+  const double side = std::sqrt(footprint_area(spec) / spec.footprint_density);
+  return Point(side, side);
+}
+
 // Lengths derived from the spec (random_instance.h, "Clearances").
-struct Clearances {
-  double passage = 0;         // w
-  double point_boundary = 0;  // cb
-  double point_obstacle = 0;  // co
-  double point_spacing = 0;   // d
-  double robot_object = 0;    // robot start to object start (centres)
+struct Layout {
+  double width = 0, height = 0;
+  double passage = 0;          // w
+  double pair = 0;             // R of solvability.h
+  double grasp = 0;            // cg
+  double point_obstacle = 0;   // max(cg, s/√2 + slack)
+  double point_boundary = 0;   // cb
+  double region_side = 0;      // s
+  double spacing = 0;          // d
+  bool dense = false;          // Chebyshev spacing
+  double robot_object = 0;     // robot start to object start (centres)
 };
 
-Clearances clearances(const InstanceSpec& spec) {
-  const double r = spec.robot_radius;
-  const double rho = spec.object_radius;
-  const double s = spec.region_side;
-  Clearances c;
-  c.passage = 2 * (r + rho) + kPassageMargin;
-  c.point_boundary = std::max(c.passage + rho, s / 2 + kPlacementSlack);
-  c.point_obstacle = std::max(c.passage + rho, s / std::numbers::sqrt2);
-  c.point_spacing = std::max(s * std::numbers::sqrt2 + kRegionGap, c.passage);
-  c.robot_object = r + rho + kRobotObjectGap;
-  return c;
+double sparse_spacing(const InstanceSpec& spec, double w) {
+  return std::max(spec.region_side * std::numbers::sqrt2 + kRegionGap, w);
+}
+
+Layout layout(const InstanceSpec& spec) {
+  const double r = spec.robot_radius, rho = spec.object_radius;
+  Layout l;
+  const Point size = workspace_size(spec);
+  l.width = size.x();
+  l.height = size.y();
+  l.passage = 2 * (r + rho) + spec.passage_margin;
+  l.pair = r + rho + kPairMargin;
+  l.grasp = 2 * r + rho + kGraspMargin;
+  l.region_side = spec.region_side;
+  l.spacing = sparse_spacing(spec, l.passage);
+  l.point_boundary = std::max(l.grasp, l.region_side / 2 + kPlacementSlack);
+  const double inner = std::max(0.0, l.width - 2 * l.point_boundary) *
+                       std::max(0.0, l.height - 2 * l.point_boundary);
+  const int points = spec.objects + 1;  // the goals (or starts) and the parking spot
+  const double fit = std::sqrt(kPackingFraction * inner / points);
+  l.robot_object = r + rho + kRobotObjectGap;
+  if (fit < l.spacing) {
+    l.dense = true;
+    const double smallest = std::min(spec.region_side, 2 * rho + kMinRegionMargin);
+    l.region_side = std::clamp(fit - kDenseRegionGap, smallest, spec.region_side);
+    l.spacing = l.region_side + kDenseRegionGap;
+    l.point_boundary = std::max(rho + kDenseWallGap, l.region_side / 2 + kPlacementSlack);
+    l.robot_object = r + rho + kDenseRegionGap;
+  }
+  l.point_obstacle = std::max(l.grasp, l.region_side / std::numbers::sqrt2 + kPlacementSlack);
+  return l;
+}
+
+// The workspace (footprint square or width x height) fits the clearances.
+void check_workspace(const InstanceSpec& spec) {
+  const Layout l = layout(spec);
+  const char* wfield = spec.footprint_density > 0 ? "footprint_density" : "width";
+  const char* hfield = spec.footprint_density > 0 ? "footprint_density" : "height";
+  if (spec.footprint_density > 0 && !(l.width >= kMinLength && l.width <= kMaxWorkspaceSide)) {
+    bad_field("footprint_density", "gives a workspace side of " + num(l.width) +
+                                       " m, outside [" + num(kMinLength) + ", " +
+                                       num(kMaxWorkspaceSide) + "] m");
+  }
+  auto wide_enough = [&](double side, const char* field) {
+    if (!(side > 2 * l.point_boundary)) {
+      bad_field(field, "workspace too small: a side must exceed " + num(2 * l.point_boundary) +
+                           " m (twice the " + num(l.point_boundary) +
+                           " m that object starts and goals keep from the boundary), got " +
+                           num(side));
+    }
+  };
+  wide_enough(l.width, wfield);
+  wide_enough(l.height, hfield);
 }
 
 void check_spec(const InstanceSpec& spec) {
@@ -146,12 +249,24 @@ void check_spec(const InstanceSpec& spec) {
   }
   check_fraction(spec.obstacle_density, "obstacle_density", kMaxObstacleDensity);
   check_fraction(spec.unknown_fraction, "unknown_fraction", 1);
+  check_fraction(spec.footprint_density, "footprint_density", kMaxFootprintDensity);
   check_length(spec.width, "width", kMaxWorkspaceSide);
   check_length(spec.height, "height", kMaxWorkspaceSide);
   check_length(spec.robot_radius, "robot_radius");
   check_length(spec.object_radius, "object_radius");
   check_length(spec.region_side, "region_side");
   check_length(spec.sensor_range, "sensor_range");
+  check_length(spec.max_obstacle_side, "max_obstacle_side", kMaxMaxObstacleSide);
+  if (spec.max_obstacle_side < kMinMaxObstacleSide) {
+    bad_field("max_obstacle_side", "must be >= " + num(kMinMaxObstacleSide) + " m, got " +
+                                       num(spec.max_obstacle_side));
+  }
+  if (!(std::isfinite(spec.passage_margin) && spec.passage_margin >= kMinPassageMargin &&
+        spec.passage_margin <= kMaxPassageMargin)) {
+    bad_field("passage_margin", "must be finite and in [" + num(kMinPassageMargin) + ", " +
+                                    num(kMaxPassageMargin) + "] m, got " +
+                                    num(spec.passage_margin));
+  }
   if (spec.max_attempts < 1 || spec.max_attempts > kMaxAttemptsLimit) {
     bad_field("max_attempts", "must be an integer in [1, " + std::to_string(kMaxAttemptsLimit) +
                                   "], got " + std::to_string(spec.max_attempts));
@@ -161,28 +276,15 @@ void check_spec(const InstanceSpec& spec) {
                                  " m (an object must fit in its region), got " +
                                  num(spec.region_side));
   }
-  const Clearances c = clearances(spec);
-  auto wide_enough = [&](double side, const char* field) {
-    if (!(side > 2 * c.point_boundary)) {
-      bad_field(field, "workspace too small: must exceed " + num(2 * c.point_boundary) +
-                           " m (twice the " + num(c.point_boundary) +
-                           " m that object starts and goals keep from the boundary), got " +
-                           num(side));
-    }
-  };
-  wide_enough(spec.width, "width");
-  wide_enough(spec.height, "height");
+  check_workspace(spec);
 }
 
 std::string describe(const InstanceSpec& spec) {
+  const Point size = workspace_size(spec);
   return std::string("random_instance(class ") + to_string(spec.goal_class) +
          ", N=" + std::to_string(spec.objects) + ", density " + num(spec.obstacle_density) +
-         ", seed " + std::to_string(spec.seed) + ", " + num(spec.width) + " x " + num(spec.height) +
+         ", seed " + std::to_string(spec.seed) + ", " + num(size.x()) + " x " + num(size.y()) +
          " m)";
-}
-
-Polygon rectangle(double x0, double y0, double x1, double y1) {
-  return Polygon{{Point(x0, y0), Point(x1, y0), Point(x1, y1), Point(x0, y1)}};
 }
 
 // Axis-aligned bounding box, for cheap rejection before exact distances.
@@ -224,8 +326,7 @@ double segment_distance(const Point& a, const Point& b, const Point& c, const Po
 
 // Whether two closed simple polygons are less than w apart (they overlap, one contains the
 // other, or two edges come closer than w). Edge pairs whose bounding boxes are >= w apart are
-// skipped: the box gap is a lower bound of the segments' distance, so the answer is the one
-// of the full O(n m) scan, at a cost proportional to the edges that face each other.
+// skipped (the box gap bounds the segments' distance from below).
 bool closer_than(const Polygon& p, const Polygon& q, double w) {
   if (geometry::contains(q, p.vertices.front()) || geometry::contains(p, q.vertices.front())) {
     return true;
@@ -249,6 +350,88 @@ bool closer_than(const Polygon& p, const Polygon& q, double w) {
   return false;
 }
 
+// How deep the deepest vertex of p lies inside q (0 when none does).
+double vertex_depth(const Polygon& p, const Polygon& q, const Box& qbox) {
+  double depth = 0;
+  for (const Point& v : p.vertices) {
+    if (box_gap(qbox, v) > 0) continue;
+    depth = std::max(depth, -geometry::signed_distance(q, v));
+  }
+  return depth;
+}
+
+// Crossing-number point-in-polygon in doubles (the coverage grid's estimate only).
+bool inside(const Polygon& p, const Point& x) {
+  bool in = false;
+  for (std::size_t i = 0, j = p.size() - 1; i < p.size(); j = i++) {
+    const Point& a = p.vertices[i];
+    const Point& b = p.vertices[j];
+    if ((a.y() > x.y()) != (b.y() > x.y()) &&
+        x.x() < (b.x() - a.x()) * (x.y() - a.y()) / (b.y() - a.y()) + a.x()) {
+      in = !in;
+    }
+  }
+  return in;
+}
+
+// Which cells of a grid over the workspace have their centre inside some obstacle.
+class CoverageGrid {
+ public:
+  CoverageGrid(double width, double height, double cell)
+      : h_(cell),
+        nx_(std::max(1, static_cast<int>(std::ceil(width / cell)))),
+        ny_(std::max(1, static_cast<int>(std::ceil(height / cell)))),
+        covered_(static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_), 0) {}
+
+  // Cells of p not covered yet; with commit, they become covered.
+  std::size_t fresh(const Polygon& p, bool commit) {
+    Point lo = p.vertices.front(), hi = lo;
+    for (const Point& v : p.vertices) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
+    const int x0 = std::max(0, static_cast<int>(lo.x() / h_));
+    const int x1 = std::min(nx_ - 1, static_cast<int>(hi.x() / h_));
+    const int y0 = std::max(0, static_cast<int>(lo.y() / h_));
+    const int y1 = std::min(ny_ - 1, static_cast<int>(hi.y() / h_));
+    std::size_t n = 0;
+    for (int iy = y0; iy <= y1; ++iy) {
+      for (int ix = x0; ix <= x1; ++ix) {
+        std::uint8_t& c = covered_[static_cast<std::size_t>(iy * nx_ + ix)];
+        if (c != 0 || !inside(p, Point((ix + 0.5) * h_, (iy + 0.5) * h_))) continue;
+        ++n;
+        if (commit) c = 1;
+      }
+    }
+    return n;
+  }
+  double cell_area() const { return h_ * h_; }
+
+ private:
+  double h_;
+  int nx_, ny_;
+  std::vector<std::uint8_t> covered_;
+};
+
+// The nearest pair of boundary points (on p, on q) of two disjoint polygons, by the four
+// endpoint-to-segment distances of every edge pair (exact for non-crossing edges).
+std::pair<Point, Point> nearest_points(const Polygon& p, const Polygon& q) {
+  std::pair<Point, Point> best{p.vertices.front(), q.vertices.front()};
+  double d = std::numeric_limits<double>::infinity();
+  auto consider = [&](const Point& a, const Point& b) {
+    const double e = (a - b).norm();
+    if (e < d) d = e, best = {a, b};
+  };
+  for (std::size_t i = 0, n = p.size(); i < n; ++i) {
+    const Point& a = p.vertices[i];
+    const Point& b = p.vertices[(i + 1) % n];
+    for (std::size_t j = 0, m = q.size(); j < m; ++j) {
+      const Point& c = q.vertices[j];
+      const Point& e = q.vertices[(j + 1) % m];
+      consider(a, geometry::nearest_on_segment(c, e, a));
+      consider(geometry::nearest_on_segment(a, b, c), c);
+    }
+  }
+  return best;
+}
+
 // Distance from x to the closed axis-aligned square of side `side` centred at c.
 double square_distance(const Point& c, double side, const Point& x) {
   const double dx = std::max(std::abs(x.x() - c.x()) - side / 2, 0.0);
@@ -262,95 +445,347 @@ struct Obstacle {
   bool unknown = false;
 };
 
+// The pocket of the sealed class in its own frame (random_instance.h, "Sealed pocket"): the
+// interior [-a, a] x [0, 2a], walls of thickness t, the mouth |x| <= m/2 in the front wall.
+struct PocketFrame {
+  double a = 0, t = 0, m = 0;
+  Polygon walls() const {
+    return Polygon{{Point(-a - t, -t), Point(a + t, -t), Point(a + t, 2 * a + t),
+                    Point(m / 2, 2 * a + t), Point(m / 2, 2 * a), Point(a, 2 * a), Point(a, 0),
+                    Point(-a, 0), Point(-a, 2 * a), Point(-m / 2, 2 * a),
+                    Point(-m / 2, 2 * a + t), Point(-a - t, 2 * a + t)}};
+  }
+  Point goal() const { return Point(0, a); }
+  Point blocker() const { return Point(0, 2 * a + t); }
+  Point mouth() const { return Point(0, 2 * a + t / 2); }
+};
+
+struct Pose {
+  Point origin = Point::Zero();
+  double cs = 1, sn = 0;
+  Point apply(const Point& v) const {
+    return origin + Point(cs * v.x() - sn * v.y(), sn * v.x() + cs * v.y());
+  }
+  Point inverse(const Point& x) const {
+    const Point d = x - origin;
+    return Point(cs * d.x() + sn * d.y(), -sn * d.x() + cs * d.y());
+  }
+  Polygon apply(Polygon p) const {
+    for (Point& v : p.vertices) v = apply(v);
+    return p;
+  }
+};
+
+struct Pocket {
+  PocketFrame frame;
+  Pose pose;
+  Point goal, blocker, mouth, outward;
+  double keepout = 0;  // other points keep this far from the blocker
+};
+
+double wall_gap(const Polygon& p, double width, double height) {
+  double gap = std::numeric_limits<double>::infinity();
+  for (const Point& v : p.vertices) {
+    gap = std::min({gap, v.x(), width - v.x(), v.y(), height - v.y()});
+  }
+  return gap;
+}
+
+// The candidate's relation to the walls: every wall either touched (gap 0) or >= w away.
+bool boundary_rule(const Polygon& p, double width, double height, double w) {
+  double gaps[4] = {std::numeric_limits<double>::infinity(),
+                    std::numeric_limits<double>::infinity(),
+                    std::numeric_limits<double>::infinity(),
+                    std::numeric_limits<double>::infinity()};
+  for (const Point& v : p.vertices) {
+    if (v.x() < 0 || v.x() > width || v.y() < 0 || v.y() > height) return false;
+    gaps[0] = std::min(gaps[0], v.x());
+    gaps[1] = std::min(gaps[1], width - v.x());
+    gaps[2] = std::min(gaps[2], v.y());
+    gaps[3] = std::min(gaps[3], height - v.y());
+  }
+  return std::all_of(std::begin(gaps), std::end(gaps), [&](double g) { return g == 0 || g >= w; });
+}
+
+// A convex polygon clipped to [0, width] x [0, height], vertices within kWallSnap of a wall
+// moved onto it; empty when too small or with a too short edge.
+Polygon clip_to_workspace(const Polygon& convex, double width, double height) {
+  using geometry::HalfPlane;
+  Polygon p = convex;
+  for (const HalfPlane& h : {HalfPlane{Point(-1, 0), 0}, HalfPlane{Point(1, 0), width},
+                             HalfPlane{Point(0, -1), 0}, HalfPlane{Point(0, 1), height}}) {
+    p = geometry::clip(p, h);
+    if (p.size() < 3) return Polygon{};
+  }
+  for (Point& v : p.vertices) {
+    auto snap = [](double& c, double wall) {
+      if (std::abs(c - wall) <= kWallSnap) c = wall;
+    };
+    snap(v.x(), 0), snap(v.x(), width), snap(v.y(), 0), snap(v.y(), height);
+  }
+  p = geometry::remove_collinear(p);
+  if (p.size() < 3 || p.area() < kMinClippedArea) return Polygon{};
+  for (std::size_t i = 0, n = p.size(); i < n; ++i) {
+    if ((p.vertices[(i + 1) % n] - p.vertices[i]).norm() < kMinHullEdge) return Polygon{};
+  }
+  return p;
+}
+
 class Generator {
  public:
-  explicit Generator(const InstanceSpec& spec) : spec_(spec), c_(clearances(spec)) {}
+  Generator(const InstanceSpec& spec, int redraw)
+      : spec_(spec),
+        l_(layout(spec)),
+        redraw_(redraw),
+        raster_(l_.width, l_.height, l_.pair, kRasterCell, kMaxRasterCells),
+        coverage_(l_.width, l_.height, raster_.cell_side()) {}
 
-  Scenario run() {
+  // The instance, or nullopt when the exact checks fail (the caller redraws).
+  std::optional<GeneratedInstance> run() {
+    if (spec_.goal_class == GoalClass::kSealed) place_pocket();
     place_starts();
     place_goals();
     place_robot();
+    place_parking();
+    build_targets();
+    if (pocket_ && !commit_pocket()) return std::nullopt;
     place_obstacles();
     return assemble();
   }
 
  private:
+  Rng stream(std::uint64_t s) const {
+    return Rng::derive(spec_.seed, s + kRedrawStreamStride * static_cast<std::uint64_t>(redraw_));
+  }
+
   [[noreturn]] void placement_failed(const std::string& what, const std::string& rule) const {
     throw Error(describe(spec_) + ": could not place " + what + " in " +
                 std::to_string(spec_.max_attempts) + " attempts (" + rule +
-                "); use a larger workspace, fewer objects or a smaller region_side");
+                "); use a larger workspace, fewer objects, a smaller footprint_density or a "
+                "smaller region_side");
   }
 
-  // Uniform in the square-inset workspace [m, width - m] x [m, height - m].
+  // Uniform in the inset workspace [m, width - m] x [m, height - m].
   Point inset_point(Rng& rng, double m) const {
-    return Point(rng.uniform(m, spec_.width - m), rng.uniform(m, spec_.height - m));
+    return Point(rng.uniform(m, l_.width - m), rng.uniform(m, l_.height - m));
   }
 
-  // Points pairwise >= point_spacing apart, >= point_boundary from the boundary.
-  std::vector<Point> spaced_points(Rng& rng, const char* what) const {
-    std::vector<Point> out;
-    for (int i = 0; i < spec_.objects; ++i) {
-      bool placed = false;
-      for (int attempt = 0; attempt < spec_.max_attempts && !placed; ++attempt) {
-        const Point p = inset_point(rng, c_.point_boundary);
-        placed = std::all_of(out.begin(), out.end(),
-                             [&](const Point& q) { return (p - q).norm() >= c_.point_spacing; });
-        if (placed) out.push_back(p);
-      }
-      if (!placed) {
-        placement_failed(std::string(what) + " of object M" + std::to_string(i + 1),
-                         std::string(what) + "s keep >= " + num(c_.point_spacing) +
-                             " m from each other and >= " + num(c_.point_boundary) +
-                             " m from the boundary");
+  bool spaced(const Point& p, const Point& q) const {
+    if (!l_.dense) return (p - q).norm() >= l_.spacing;
+    return std::max(std::abs(p.x() - q.x()), std::abs(p.y() - q.y())) >= l_.spacing;
+  }
+
+  bool spaced_from(const Point& p, const std::vector<Point>& list) const {
+    return std::all_of(list.begin(), list.end(), [&](const Point& q) { return spaced(p, q); });
+  }
+
+  // Out of the sealed pocket's box and away from its blocker.
+  bool clear_of_pocket(const Point& p, double clearance) const {
+    if (!pocket_) return true;
+    const Point local = pocket_->pose.inverse(p);
+    const PocketFrame& f = pocket_->frame;
+    const double e = clearance;
+    const bool in_box = local.x() > -f.a - f.t - e && local.x() < f.a + f.t + e &&
+                        local.y() > -f.t - e && local.y() < 2 * f.a + f.t + e;
+    return !in_box && (p - pocket_->blocker).norm() >= pocket_->keepout;
+  }
+
+  bool point_ok(const Point& p, const std::vector<Point>& out, const std::vector<Point>& also) const {
+    return spaced_from(p, out) && spaced_from(p, also) && clear_of_pocket(p, l_.point_obstacle);
+  }
+
+  // Dense fallback: the sites of a square lattice of pitch d over the inset workspace that keep
+  // the rules, in random order (Fisher–Yates with rng.index), as many as needed.
+  void lattice_points(Rng& rng, int n, std::vector<Point>& out,
+                      const std::vector<Point>& also) const {
+    const double m = l_.point_boundary, d = l_.spacing;
+    const int cols = static_cast<int>(std::floor((l_.width - 2 * m) / d)) + 1;
+    const int rows = static_cast<int>(std::floor((l_.height - 2 * m) / d)) + 1;
+    const Point offset((l_.width - (cols - 1) * d) / 2, (l_.height - (rows - 1) * d) / 2);
+    std::vector<Point> sites;
+    for (int iy = 0; iy < rows; ++iy) {
+      for (int ix = 0; ix < cols; ++ix) {
+        const Point p = offset + d * Point(ix, iy);
+        if (point_ok(p, out, also)) sites.push_back(p);
       }
     }
-    return out;
+    for (std::size_t i = sites.size(); i > 1; --i) {
+      std::swap(sites[i - 1], sites[static_cast<std::size_t>(rng.index(i))]);
+    }
+    for (const Point& p : sites) {
+      if (n == 0) return;
+      if (point_ok(p, out, also)) out.push_back(p), --n;
+    }
+  }
+
+  // n points spaced from `out` (appended) and from `also`, cb from the boundary, off the pocket;
+  // in dense instances, when random draws cannot place them all, all n come from
+  // lattice_points instead.
+  void spaced_points(Rng& rng, int n, std::vector<Point>& out, const std::vector<Point>& also,
+                     const std::string& what, int first_index) const {
+    const std::size_t initial = out.size();
+    for (int i = 0; i < n; ++i) {
+      bool placed = false;
+      for (int attempt = 0; attempt < spec_.max_attempts && !placed; ++attempt) {
+        const Point p = inset_point(rng, l_.point_boundary);
+        placed = point_ok(p, out, also);
+        if (placed) out.push_back(p);
+      }
+      if (placed) continue;
+      if (l_.dense) {  // start over on the lattice
+        out.resize(initial);
+        lattice_points(rng, n, out, also);
+        if (out.size() == initial + static_cast<std::size_t>(n)) return;
+      }
+      placement_failed(what + " " + std::to_string(first_index + i),
+                       "points keep a spacing >= " + num(l_.spacing) +
+                           (l_.dense ? " m (Chebyshev)" : " m") + " and >= " +
+                           num(l_.point_boundary) + " m from the boundary");
+    }
   }
 
   void place_starts() {
-    Rng rng = Rng::derive(spec_.seed, kStartsStream);
-    starts_ = spaced_points(rng, "the start");
+    Rng rng = stream(kStartsStream);
+    spaced_points(rng, spec_.objects, starts_, {}, "the start of object M", 1);
   }
 
   void place_goals() {
     if (spec_.goal_class == GoalClass::kCyclic) {
-      // Class b: the goal of object i is the start of object i + 1 (mod N).
       const std::size_t n = starts_.size();
       for (std::size_t i = 0; i < n; ++i) goals_.push_back(starts_[(i + 1) % n]);
       return;
     }
-    Rng rng = Rng::derive(spec_.seed, kGoalsStream);
-    goals_ = spaced_points(rng, "the goal");
+    Rng rng = stream(kGoalsStream);
+    int n = spec_.objects;
+    if (pocket_) {
+      goals_.push_back(pocket_->goal);
+      --n;
+    }
+    spaced_points(rng, n, goals_, {}, "the goal of object M", spec_.objects - n + 1);
   }
 
+  void place_parking() {
+    Rng rng = stream(kParkingStream);
+    std::vector<Point> all = starts_;
+    all.insert(all.end(), goals_.begin(), goals_.end());
+    std::vector<Point> spot;
+    spaced_points(rng, 1, spot, all, "the parking spot", 1);
+    parking_ = spot.front();
+  }
+
+  // The robot start: clear of the boundary (the pair's raster needs it), every object start
+  // and every region, off the pocket.
+  double robot_clearance() const { return l_.pair + 2 * raster_.margin(); }
+
   void place_robot() {
-    Rng rng = Rng::derive(spec_.seed, kRobotStream);
+    Rng rng = stream(kRobotStream);
     for (int attempt = 0; attempt < spec_.max_attempts; ++attempt) {
-      const Point p = inset_point(rng, c_.passage);
+      const Point p = inset_point(rng, std::max(robot_clearance(), spec_.robot_radius));
       const bool clear_of_objects =
           std::all_of(starts_.begin(), starts_.end(),
-                      [&](const Point& q) { return (p - q).norm() >= c_.robot_object; });
+                      [&](const Point& q) { return (p - q).norm() >= l_.robot_object; });
       const bool clear_of_regions = std::all_of(goals_.begin(), goals_.end(), [&](const Point& g) {
-        return square_distance(g, spec_.region_side, p) >= spec_.robot_radius;
+        return square_distance(g, l_.region_side, p) >= spec_.robot_radius;
       });
-      if (clear_of_objects && clear_of_regions) {
+      if (clear_of_objects && clear_of_regions && clear_of_pocket(p, l_.grasp)) {
         robot_start_ = p;
         robot_heading_ = rng.uniform(-std::numbers::pi, std::numbers::pi);
         return;
       }
     }
-    placement_failed("the robot start", "it keeps >= " + num(c_.passage) +
-                                            " m from the boundary, >= " + num(c_.robot_object) +
+    placement_failed("the robot start", "it keeps >= " + num(robot_clearance()) +
+                                            " m from the boundary, >= " + num(l_.robot_object) +
                                             " m from every object start and out of every region");
+  }
+
+  // The pocket frame for this spec: interior half-side a, walls t, mouth m (>= what the
+  // raster can certify, pair_raster.h).
+  PocketFrame pocket_frame() const {
+    PocketFrame f;
+    f.t = kWallThickness;
+    f.m = std::max(l_.passage, 2 * (l_.pair + raster_.margin()) + 2 * raster_.cell_side());
+    f.a = std::max({l_.grasp, l_.region_side / std::numbers::sqrt2 + kPlacementSlack,
+                    f.m / 2 + kMinStub});
+    return f;
+  }
+
+  void place_pocket() {
+    Rng rng = stream(kPocketStream);
+    Pocket k;
+    k.frame = pocket_frame();
+    const Polygon local = k.frame.walls();
+    const double rho = spec_.object_radius;
+    for (int attempt = 0; attempt < spec_.max_attempts; ++attempt) {
+      const double angle = rng.uniform(0, 2 * std::numbers::pi);
+      k.pose = Pose{inset_point(rng, 0), std::cos(angle), std::sin(angle)};
+      const Polygon walls = k.pose.apply(local);
+      const bool inside = std::all_of(walls.vertices.begin(), walls.vertices.end(), [&](auto& v) {
+        return v.x() >= l_.passage && v.x() <= l_.width - l_.passage && v.y() >= l_.passage &&
+               v.y() <= l_.height - l_.passage;
+      });
+      k.blocker = k.pose.apply(k.frame.blocker());
+      const double room = l_.grasp + spec_.robot_radius;
+      const Point& b = k.blocker;
+      if (!inside || b.x() < room || b.x() > l_.width - room || b.y() < room ||
+          b.y() > l_.height - room) {
+        continue;
+      }
+      k.goal = k.pose.apply(k.frame.goal());
+      k.mouth = k.pose.apply(k.frame.mouth());
+      k.outward = Point(-k.pose.sn, k.pose.cs);
+      k.keepout = 2 * rho + 2 * l_.pair + kDenseRegionGap;
+      pocket_ = k;
+      return;
+    }
+    placement_failed("the sealed pocket", "its walls keep >= " + num(l_.passage) +
+                                              " m from the boundary");
+  }
+
+  // Raster targets (random_instance.h, "Solvability"): the grasp positions of every start,
+  // goal and the parking spot, and the blocker's outward one.
+  std::vector<int> grasp_cells(const Point& p) const {
+    std::vector<int> out;
+    for (int k = 0; k < kGraspDirections; ++k) {
+      const double a = 2 * std::numbers::pi * k / kGraspDirections;
+      out.push_back(raster_.cell_of(p + (spec_.robot_radius + kGripOffset) *
+                                            Point(std::cos(a), std::sin(a))));
+    }
+    return out;
+  }
+
+  void build_targets() {
+    for (const Point& p : starts_) targets_.push_back(grasp_cells(p));
+    for (const Point& p : goals_) targets_.push_back(grasp_cells(p));
+    targets_.push_back(grasp_cells(parking_));
+    if (pocket_) {
+      targets_.push_back({raster_.cell_of(pocket_->blocker + (spec_.robot_radius + kGripOffset) *
+                                                                 pocket_->outward)});
+    }
+    source_ = raster_.cell_of(robot_start_);
+  }
+
+  // The pocket as the first familiar obstacle; false when it cuts a point off in the raster.
+  bool commit_pocket() {
+    Obstacle o;
+    o.polygon = pocket_->pose.apply(pocket_->frame.walls());
+    o.box = bounding_box(o.polygon);
+    const std::vector<int> cells = raster_.newly_blocked(o.polygon);
+    if (!raster_.connects(source_, targets_, cells)) return false;
+    raster_.block(cells);
+    covered_ += o.polygon.area();
+    coverage_.fresh(o.polygon, true);
+    obstacles_.push_back(std::move(o));
+    return true;
   }
 
   // A familiar shape (a rectangle or an L, possibly non-convex) or an unknown one (an ellipse,
   // or with round_unknown off a rectangle or the hull of random points in a disk, convex),
-  // centred near the origin, before rotation. Empty when a hull came out a sliver or with a
-  // very short edge.
+  // centred near the origin, before rotation. Empty when a hull came
+  // out a sliver or with a very short edge.
   Polygon sample_shape(Rng& rng, bool unknown) const {
+    const double max_side = spec_.max_obstacle_side;
     if (unknown && spec_.round_unknown) {
-      const double a = rng.uniform(kMinObstacleSide, kMaxObstacleSide) / 2;
+      const double a = rng.uniform(kMinObstacleSide, max_side) / 2;
       const double b = rng.uniform(std::max(kMinObstacleSide / 2, a / kMaxEllipseAspect), a);
       std::vector<Point> points;
       for (int k = 0; k < kEllipseSides; ++k) {
@@ -361,21 +796,21 @@ class Generator {
     }
     const bool rectangular = rng.bernoulli(0.5);
     if (rectangular) {
-      const double a = rng.uniform(kMinObstacleSide, kMaxObstacleSide);
-      const double b = rng.uniform(kMinObstacleSide, kMaxObstacleSide);
+      const double a = rng.uniform(kMinObstacleSide, max_side);
+      const double b = rng.uniform(kMinObstacleSide, max_side);
       return rectangle(-a / 2, -b / 2, a / 2, b / 2);
     }
     if (!unknown) {
       // An L: a x b bounding box, arms of thickness t, each arm at least kMinObstacleSide long
       // beyond the corner square.
-      const double a = rng.uniform(2 * kMinObstacleSide, kMaxObstacleSide);
-      const double b = rng.uniform(2 * kMinObstacleSide, kMaxObstacleSide);
+      const double a = rng.uniform(2 * kMinObstacleSide, max_side);
+      const double b = rng.uniform(2 * kMinObstacleSide, max_side);
       const double t = rng.uniform(kMinObstacleSide, std::min(a, b) - kMinObstacleSide);
       const Point o(-a / 2, -b / 2);
       return Polygon{
           {o, o + Point(a, 0), o + Point(a, t), o + Point(t, t), o + Point(t, b), o + Point(0, b)}};
     }
-    const double radius = rng.uniform(kMinObstacleSide, kMaxObstacleSide) / 2;
+    const double radius = rng.uniform(kMinObstacleSide, max_side) / 2;
     const int k = static_cast<int>(rng.uniform_int(kMinHullPoints, kMaxHullPoints));
     std::vector<Point> points;
     for (int i = 0; i < k; ++i) {
@@ -391,73 +826,161 @@ class Generator {
     return hull;
   }
 
-  // The shape rotated by a random angle and moved to a random point of the obstacle band.
-  Polygon sample_obstacle(Rng& rng, bool unknown) const {
-    Polygon p = sample_shape(rng, unknown);
+  // The shape rotated by a random angle and moved to a random point of the workspace; a
+  // familiar rectangle that crosses the boundary is clipped to it (random_instance.h).
+  Obstacle sample_obstacle(Rng& rng, bool unknown) const {
+    Obstacle o;
+    o.unknown = unknown;
+    o.polygon = sample_shape(rng, unknown);
     const double angle = rng.uniform(0, 2 * std::numbers::pi);
-    const Point centre = inset_point(rng, c_.passage);
-    const double cs = std::cos(angle), sn = std::sin(angle);
-    for (Point& v : p.vertices) {
-      v = centre + Point(cs * v.x() - sn * v.y(), sn * v.x() + cs * v.y());
+    const Pose pose{inset_point(rng, 0), std::cos(angle), std::sin(angle)};
+    if (o.polygon.size() < 3) return o;
+    o.polygon = pose.apply(o.polygon);
+    const bool crosses = std::any_of(o.polygon.vertices.begin(), o.polygon.vertices.end(),
+                                     [&](const Point& v) {
+                                       return v.x() < 0 || v.x() > l_.width || v.y() < 0 ||
+                                              v.y() > l_.height;
+                                     });
+    if (crosses && !unknown && o.polygon.size() == 4) {  // a familiar rectangle
+      o.polygon = clip_to_workspace(o.polygon, l_.width, l_.height);
     }
-    return p;
+    if (o.polygon.size() >= 3) o.box = bounding_box(o.polygon);
+    return o;
   }
 
-  // Every clearance of the header for a candidate obstacle, then exact validity.
-  bool acceptable(const Polygon& p, bool unknown) const {
-    if (p.size() < 3) return false;
-    const double w = c_.passage;
-    for (const Point& v : p.vertices) {
-      if (v.x() < w || v.x() > spec_.width - w || v.y() < w || v.y() > spec_.height - w) {
-        return false;
+  void translate(Obstacle& o, const Point& v) const {
+    for (Point& x : o.polygon.vertices) {
+      x += v;
+      for (const auto& [c, wall] : {std::pair<double*, double>{&x.x(), 0.0}, {&x.x(), l_.width},
+                                    {&x.y(), 0.0}, {&x.y(), l_.height}}) {
+        if (std::abs(*c - wall) <= kWallSnap) *c = wall;
       }
     }
-    const Box box = bounding_box(p);
-    auto clear_of_point = [&](const Point& x, double clearance) {
-      return box_gap(box, x) >= clearance || geometry::signed_distance(p, x) >= clearance;
+    o.box = bounding_box(o.polygon);
+  }
+
+  // Snapping (random_instance.h, "Clusters and passages"): a familiar obstacle less than w
+  // from a wall is moved onto it, an unknown one away to w; then an obstacle less than w from
+  // another (and not overlapping it) is moved into it by the gap plus kSnapDepth.
+  void snap(Obstacle& o) const {
+    if (o.polygon.size() < 3) return;
+    const double w = l_.passage;
+    const double gx0 = o.box.lo.x(), gx1 = l_.width - o.box.hi.x();
+    const double gy0 = o.box.lo.y(), gy1 = l_.height - o.box.hi.y();
+    Point v = Point::Zero();
+    auto axis = [&](double lo, double hi, double& out) {
+      if (lo > 0 && lo < w) out = o.unknown ? w - lo + kPlacementSlack : -lo;
+      if (hi > 0 && hi < w) out = o.unknown ? -(w - hi + kPlacementSlack) : hi;
     };
-    for (const Point& x : starts_) {
-      if (!clear_of_point(x, c_.point_obstacle)) return false;
+    axis(gx0, gx1, v.x());
+    axis(gy0, gy1, v.y());
+    if (v != Point::Zero()) translate(o, v);
+    for (const Obstacle& q : obstacles_) {
+      if (box_gap(o.box, q.box) >= w || !closer_than(o.polygon, q.polygon, w)) continue;
+      if (geometry::contains(q.polygon, o.polygon.vertices.front()) ||
+          geometry::contains(o.polygon, q.polygon.vertices.front())) {
+        return;
+      }
+      const auto [a, b] = nearest_points(o.polygon, q.polygon);
+      const double gap = (b - a).norm();
+      if (gap <= 0) return;  // touching or crossing: left to acceptable()
+      translate(o, (b - a) * ((gap + kSnapDepth) / gap));
+      return;
     }
-    for (const Point& x : goals_) {
-      if (!clear_of_point(x, c_.point_obstacle)) return false;
+  }
+
+  // The clearances of the header (everything but the raster), then exact validity.
+  bool acceptable(const Obstacle& o) const {
+    const Polygon& p = o.polygon;
+    if (p.size() < 3 || !boundary_rule(p, l_.width, l_.height, l_.passage)) return false;
+    if (o.unknown && wall_gap(p, l_.width, l_.height) < l_.passage) return false;  // no touch
+    auto clear_of_point = [&](const Point& x, double clearance) {
+      return box_gap(o.box, x) >= clearance || geometry::signed_distance(p, x) >= clearance;
+    };
+    for (const std::vector<Point>* list : {&starts_, &goals_}) {
+      for (const Point& x : *list) {
+        if (!clear_of_point(x, l_.point_obstacle)) return false;
+      }
     }
-    if (!clear_of_point(robot_start_, w)) return false;
-    for (const Obstacle& o : obstacles_) {
-      if (box_gap(box, o.box) < w && closer_than(p, o.polygon, w)) return false;
+    if (!clear_of_point(parking_, l_.point_obstacle)) return false;
+    if (!clear_of_point(robot_start_, l_.grasp)) return false;
+    if (pocket_ && !clear_of_point(pocket_->blocker, spec_.object_radius + kObstacleObjectGap)) {
+      return false;
+    }
+    for (const Obstacle& q : obstacles_) {
+      if (box_gap(o.box, q.box) >= l_.passage) continue;
+      const bool deep = vertex_depth(p, q.polygon, q.box) >= kMinOverlapDepth ||
+                        vertex_depth(q.polygon, p, o.box) >= kMinOverlapDepth;
+      if (!deep && closer_than(p, q.polygon, l_.passage)) return false;
     }
     try {
       if (geometry::validated(p, "obstacle").vertices != p.vertices) return false;
     } catch (const Error&) {
       return false;
     }
-    return !unknown || p.is_convex();
+    return !o.unknown || p.is_convex();
   }
 
-  // One obstacle after another until the target density (random_instance.h): for each, the
-  // largest of the first kCandidatesPerObstacle acceptable poses; none in max_attempts
-  // consecutive draws ends the placement.
+  // Up to kCandidatesPerObstacle poses that pass acceptable() and add at least kMinNewShare
+  // of their area to the union (coverage grid), largest addition first.
+  std::vector<Obstacle> candidates(Rng& rng, bool unknown, int& attempts) {
+    std::vector<std::pair<double, Obstacle>> found;
+    for (; attempts < spec_.max_attempts &&
+           found.size() < static_cast<std::size_t>(kCandidatesPerObstacle);
+         ++attempts) {
+      Obstacle o = sample_obstacle(rng, unknown);
+      snap(o);
+      if (!acceptable(o)) continue;
+      const double fresh = static_cast<double>(coverage_.fresh(o.polygon, false)) *
+                           coverage_.cell_area();
+      if (fresh >= kMinNewShare * o.polygon.area()) found.emplace_back(fresh, std::move(o));
+    }
+    std::stable_sort(found.begin(), found.end(),
+                     [](const auto& a, const auto& b) { return a.first > b.first; });
+    std::vector<Obstacle> out;
+    for (auto& f : found) out.push_back(std::move(f.second));
+    return out;
+  }
+
+  // The area o adds to the union of the obstacles: its own minus its exact overlap (Boolean
+  // intersection with the union of the obstacles whose boxes meet its box).
+  double new_area(const Obstacle& o) const {
+    std::vector<Polygon> near;
+    for (const Obstacle& q : obstacles_) {
+      if (box_gap(o.box, q.box) == 0) near.push_back(q.polygon);
+    }
+    if (near.empty()) return o.polygon.area();
+    const geometry::RegionSet overlap =
+        geometry::intersect(geometry::to_set(o.polygon), geometry::unite_all(near));
+    return o.polygon.area() - geometry::total_area(overlap);
+  }
+
+  // One obstacle after another until the union's area (kept exactly, new_area) reaches the
+  // target density; max_attempts consecutive failed draws end it.
   void place_obstacles() {
-    Rng rng = Rng::derive(spec_.seed, kObstaclesStream);
-    const double workspace_area = spec_.width * spec_.height;
-    while (area_ / workspace_area < spec_.obstacle_density) {
+    Rng rng = stream(kObstaclesStream);
+    const double workspace_area = l_.width * l_.height;
+    int attempts = 0;
+    while (covered_ / workspace_area < spec_.obstacle_density) {
       const bool unknown = rng.bernoulli(spec_.unknown_fraction);
-      std::optional<Polygon> best;
-      int found = 0;
-      for (int attempt = 0; attempt < spec_.max_attempts && found < kCandidatesPerObstacle;
-           ++attempt) {
-        Polygon p = sample_obstacle(rng, unknown);
-        if (!acceptable(p, unknown)) continue;
-        ++found;
-        if (!best || p.area() > best->area()) best = std::move(p);
+      bool placed = false;
+      while (!placed && attempts < spec_.max_attempts) {
+        for (Obstacle& o : candidates(rng, unknown, attempts)) {
+          const std::vector<int> cells = raster_.newly_blocked(o.polygon);
+          if (!raster_.connects(source_, targets_, cells)) continue;
+          raster_.block(cells);
+          covered_ += new_area(o);
+          coverage_.fresh(o.polygon, true);
+          obstacles_.push_back(std::move(o));
+          placed = true;
+          break;
+        }
       }
-      if (!best) {
+      if (!placed) {
         stopped_ = true;
         return;
       }
-      area_ += best->area();
-      const Box box = bounding_box(*best);
-      obstacles_.push_back(Obstacle{std::move(*best), box, unknown});
+      attempts = 0;
     }
   }
 
@@ -474,17 +997,17 @@ class Generator {
     return f;
   }
 
-  Scenario assemble() const {
+  Scenario scenario() const {
     Scenario s;
     s.name = std::string("random_") + to_string(spec_.goal_class) + "_n" +
              std::to_string(spec_.objects) + "_s" + std::to_string(spec_.seed);
     s.source = "";
-    s.workspace = rectangle(0, 0, spec_.width, spec_.height);
+    s.workspace = rectangle(0, 0, l_.width, l_.height);
     s.robot.radius = spec_.robot_radius;
     s.robot.start = robot_start_;
     s.robot.heading = robot_heading_;
     s.robot.sensor_range = spec_.sensor_range;
-    const double h = spec_.region_side / 2;
+    const double h = l_.region_side / 2;
     for (int i = 0; i < spec_.objects; ++i) {
       const std::string k = std::to_string(i + 1);
       const Point& g = goals_[static_cast<std::size_t>(i)];
@@ -493,6 +1016,9 @@ class Generator {
       s.objects.push_back(Object{
           "M" + k, geometry::Disk{starts_[static_cast<std::size_t>(i)], spec_.object_radius}});
     }
+    if (pocket_) {
+      s.objects.push_back(Object{"B1", geometry::Disk{pocket_->blocker, spec_.object_radius}});
+    }
     for (const Obstacle& o : obstacles_) {
       std::vector<NamedPolygon>& list = o.unknown ? s.unknown : s.familiar;
       const char* prefix = o.unknown ? "C" : "P";
@@ -500,33 +1026,79 @@ class Generator {
     }
     s.task = task();
     s.simulation.time_budget = kBaseTimeBudget + kTimeBudgetPerObject * spec_.objects;
-
-    const double density = area_ / (spec_.width * spec_.height);
-    s.description = std::string("random instance: class ") + to_string(spec_.goal_class) +
-                    ", N=" + std::to_string(spec_.objects) + ", density " + fixed3(density) +
-                    " (target " + fixed3(spec_.obstacle_density) + "), seed " +
-                    std::to_string(spec_.seed) + ", " + std::to_string(s.familiar.size()) +
-                    " familiar and " + std::to_string(s.unknown.size()) + " unknown obstacles";
-    if (stopped_) {
-      s.description += "; obstacle placement stopped after " + std::to_string(spec_.max_attempts) +
-                       " consecutive failed attempts";
-    }
-
-    try {
-      validate(s);
-    } catch (const ScenarioError& e) {
-      REARM_DEMAND(false, describe(spec_) + " produced an invalid scenario: " + e.what());
-    }
     return s;
   }
 
+  double covered_area() const {
+    std::vector<Polygon> all;
+    for (const Obstacle& o : obstacles_) all.push_back(o.polygon);
+    return all.empty() ? 0 : geometry::total_area(geometry::unite_all(all));
+  }
+
+  std::string description(const GeneratedInstance& g, std::size_t familiar,
+                          std::size_t unknown) const {
+    std::string d = std::string("random instance: class ") + to_string(spec_.goal_class) +
+                    ", N=" + std::to_string(spec_.objects) + ", density " +
+                    fixed3(g.achieved_density) + " (target " + fixed3(spec_.obstacle_density) +
+                    "), footprint " + fixed3(g.footprint_density) + ", seed " +
+                    std::to_string(spec_.seed) + ", " + std::to_string(familiar) +
+                    " familiar and " + std::to_string(unknown) + " unknown obstacles";
+    if (g.dense) d += "; dense spacing (region side " + fixed3(g.region_side) + ")";
+    if (pocket_) d += "; goal l1 sealed in pocket " + g.pocket.walls + " behind B1";
+    if (stopped_) {
+      d += "; obstacle placement stopped after " + std::to_string(spec_.max_attempts) +
+           " consecutive failed attempts";
+    }
+    return d;
+  }
+
+  std::optional<GeneratedInstance> assemble() const {
+    GeneratedInstance g;
+    g.scenario = scenario();
+    const double area = l_.width * l_.height;
+    g.achieved_density = covered_area() / area;
+    g.footprint_density = footprint_area(spec_) / area;
+    g.density_reached = g.achieved_density >= spec_.obstacle_density;
+    g.dense = l_.dense;
+    g.region_side = l_.region_side;
+    g.point_spacing = l_.spacing;
+    g.redraws = redraw_;
+    if (pocket_) {
+      g.pocket.present = true;
+      g.pocket.walls = g.scenario.familiar.front().name;
+      g.pocket.goal = pocket_->goal;
+      g.pocket.blocker = pocket_->blocker;
+      g.pocket.mouth = pocket_->mouth;
+    }
+    g.scenario.description = description(g, g.scenario.familiar.size(), g.scenario.unknown.size());
+    try {
+      validate(g.scenario);
+    } catch (const ScenarioError& e) {
+      REARM_DEMAND(false, describe(spec_) + " produced an invalid scenario: " + e.what());
+    }
+    g.solvability = check_solvability(g.scenario);
+    if (!g.solvability.solvable) return std::nullopt;
+    if (pocket_) {
+      g.pocket.seal = check_seal(g.scenario, 0, g.scenario.objects.size() - 1, pocket_->goal);
+      if (!g.pocket.seal.failure.empty()) return std::nullopt;
+    }
+    return g;
+  }
+
   const InstanceSpec& spec_;
-  const Clearances c_;
+  const Layout l_;
+  const int redraw_;
+  PairRaster raster_;
+  CoverageGrid coverage_;
+  std::optional<Pocket> pocket_;
   std::vector<Point> starts_, goals_;
+  Point parking_ = Point::Zero();
   Point robot_start_ = Point::Zero();
   double robot_heading_ = 0;
+  std::vector<std::vector<int>> targets_;
+  int source_ = -1;
   std::vector<Obstacle> obstacles_;
-  double area_ = 0;
+  double covered_ = 0;
   bool stopped_ = false;
 };
 
@@ -538,21 +1110,32 @@ const char* to_string(GoalClass c) {
       return "random";
     case GoalClass::kCyclic:
       return "cyclic";
+    case GoalClass::kSealed:
+      return "sealed";
   }
   REARM_DEMAND(false, "to_string: invalid GoalClass " + std::to_string(static_cast<int>(c)));
   return "";
 }
 
 GoalClass goal_class_from_string(std::string_view text) {
-  for (const GoalClass c : {GoalClass::kRandom, GoalClass::kCyclic}) {
+  for (const GoalClass c : {GoalClass::kRandom, GoalClass::kCyclic, GoalClass::kSealed}) {
     if (text == to_string(c)) return c;
   }
-  throw Error("goal class: unknown '" + std::string(text) + "' (expected 'random' or 'cyclic')");
+  throw Error("goal class: unknown '" + std::string(text) +
+              "' (expected 'random', 'cyclic' or 'sealed')");
 }
 
-Scenario random_instance(const InstanceSpec& spec) {
+GeneratedInstance generate_instance(const InstanceSpec& spec) {
   check_spec(spec);
-  return Generator(spec).run();
+  std::string last;
+  for (int redraw = 0; redraw <= kMaxRedraws; ++redraw) {
+    if (auto g = Generator(spec, redraw).run()) return std::move(*g);
+  }
+  throw Error(describe(spec) + ": the exact solvability check failed on " +
+              std::to_string(kMaxRedraws + 1) +
+              " draws; use a lower obstacle_density or a larger workspace");
 }
+
+Scenario random_instance(const InstanceSpec& spec) { return generate_instance(spec).scenario; }
 
 }  // namespace rearm::scenario

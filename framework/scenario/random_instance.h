@@ -1,115 +1,165 @@
-// Seeded random rearrangement instances for the Monte Carlo runner (docs/experiments.md,
-// "Monte Carlo runner": instance classes a — random goals — and b — cyclic shift of goals,
-// non-monotone; object count N, obstacle area fraction, familiar/unknown obstacle mix;
-// rejection-sampled so that the task is solvable with full knowledge).
+// Seeded random rearrangement instances for the Monte Carlo runner (paper §II: a disk robot of
+// radius r moves disk objects of radius ρ among familiar and unknown polygonal obstacles; the
+// task is formula (1) of the paper extended to N objects). Classes: kRandom (random goals),
+// kCyclic (the goal of Mi is the start of M(i+1 mod N): non-monotone, as the paper's Fig. 5) and
+// kSealed (the goal region of M1 lies in a pocket of familiar walls whose only entrance a
+// goal-less movable object B1 blocks: Fix mode or a buffer move is needed).
 //
-// The instance lives in the rectangle [0, width] x [0, height]. Objects M1..MN (radius ρ =
-// object_radius) start at random points; region li is the axis-aligned square of side
-// region_side centred at the goal point of Mi; the task (formula (1) of the paper, as fig5) is
-// the sequential nesting "<>(grasp(M1) && <>(release(M1,l1) && <>(grasp(M2) && ...)))", one
-// object after the other. Class b (kCyclic) puts the goal of Mi on the start of M(i+1 mod N),
-// so every goal is occupied by another object when its turn comes; class a (kRandom) draws the
-// goals at random (a goal may cover another object's start, so some class-a instances are
-// non-monotone too, as in the rearrangement literature). Obstacles are added after the objects,
-// goals and robot: familiar ones P1.. (rotated rectangles and L-shapes, possibly non-convex)
-// and unknown ones C1.. (rotated ellipses, strongly convex as the paper's §II assumes; or, with
-// round_unknown off, rotated rectangles and convex hulls of random points in a disk), each
-// unknown with probability unknown_fraction, until their total area reaches obstacle_density
-// of the workspace or max_attempts consecutive draws of an obstacle fail. Of the first 30
-// acceptable poses drawn for an obstacle the largest is kept (large obstacles waste less of the
-// workspace on the w-wide passages around them).
+// The instance lives in the rectangle [0, width] x [0, height], or, with footprint_density > 0,
+// in the square of side sqrt(A / footprint_density), A the objects' total disk area (B1
+// included). Objects M1..MN start at random points; region li is the axis-aligned square of
+// side s centred at the goal point of Mi; the task is "<>(grasp(M1) && <>(release(M1,l1) &&
+// <>(grasp(M2) && ...)))". Class kRandom draws goals at random (a goal may cover another
+// object's start). Obstacles are added last: familiar ones P1.. (rotated rectangles and
+// L-shapes, possibly non-convex; rectangles that cross the boundary are clipped to it and then
+// touch it) and unknown ones C1.. (rotated ellipses, 48-gons, strongly convex as §II assumes;
+// with round_unknown off, rotated rectangles and hulls of random points), each unknown with
+// probability unknown_fraction, until their area (the sealed pocket's walls included) reaches
+// obstacle_density of the workspace or max_attempts consecutive draws fail. Of up to
+// kCandidatesPerObstacle poses passing the cheap tests the largest that keeps the certificate
+// is kept.
 //
-// Reachable density: the passages cap it. Measured over 40 seeds (mean, worst seed) with the
-// default sizes: 10 x 10 m: N=1 0.10 (0.07), N=3 0.07-0.09 (0.04), N=6 0.03-0.06 (0.02), N=12
-// 0.00-0.02; 15 x 15 m: N<=3 0.11-0.12 (0.09), N=6 0.09-0.11, N=12 0.05-0.08; 20 x 20 m: N<=6
-// 0.11-0.14 (0.10), N=12 0.09-0.11 (class a first, then b). A target of 0.1 is reached for
-// every seed in 20 x 20 m with N<=6; 0.2 and 0.3 are out of reach for these obstacle sizes
-// whatever the workspace (0.16 in 60 x 60 m with N=1). Those figures were measured with
-// rectangular and hull unknown obstacles (round_unknown = false); with the default ellipses,
-// 10 x 10 m, target 0.1, 20 seeds per N (both classes): mean (worst) N=1 0.098 (0.083), N=3
-// 0.079 (0.058), N=6 0.049 (0.009), against 0.094, 0.075, 0.045 with the polygons on the same
-// seeds. The description records the density reached.
+// Clusters and passages. Obstacles may overlap (each overlap at least kMinOverlapDepth deep: a
+// vertex of one lies that far inside the other) and then form one cluster; two obstacles that
+// do not overlap keep >= w = 2(r + ρ) + passage_margin apart, and an obstacle keeps >= w from
+// the boundary unless it touches it (clipped familiar rectangles). So every gap is 0 (one
+// cluster, or a cluster on the wall) or a passage at least the carrying pair's diameter plus
+// passage_margin wide. Unknown ellipses may overlap familiar obstacles and each other: the
+// paper's separation assumptions on unknown obstacles (§II) are then violated — on purpose,
+// that is what the dense cells of the study measure. scenario::validate does not forbid
+// overlapping obstacles; Box2D's static shapes may overlap.
 //
-// Clearances (r = robot_radius, ρ = object_radius, s = region_side):
-//   w  = 2(r + ρ) + kPassageMargin  the width every passage keeps: it leaves kPassageMargin / 2
-//                                   on either side of the robot carrying an object, modelled as
-//                                   one disk of radius r + ρ (see (i) below).
-//   cb = max(w + ρ, s/2 + 1e-6)     object start and goal point ↔ workspace boundary
-//                                   (the second term keeps each region inside the workspace);
-//   co = max(w + ρ, s/√2)           object start and goal point ↔ every obstacle (the second
-//                                   term keeps every region free of obstacles);
-//   d  = max(s√2 + 0.1, w)          between any two object starts, and between any two goals.
-// Guarantees, each enforced while sampling and rechecked by scenario::validate at the end:
-//   - every obstacle is >= w from every other obstacle and from the workspace boundary;
-//   - every object start and goal point is >= cb from the boundary and >= co from every
-//     obstacle;
-//   - object starts are pairwise >= d apart, goal points likewise (so the regions, squares of
-//     half-diagonal s/√2 < d/2, are pairwise disjoint, and objects at their starts or at their
-//     goals never overlap since s >= 2ρ);
-//   - the robot start is >= w from every obstacle and the boundary, >= r + ρ + 0.5 from every
-//     object start, and its disk enters no region (it may touch one).
-// Why the task is solvable with full knowledge (by construction, not by running a planner):
-//   (i) The robot carrying an object is modelled, as in the paper and the baselines, by one disk
-//   of radius r + ρ. Dilating every obstacle by r + ρ and shrinking the workspace by the same
-//   amount leaves obstacles that are disjoint (gaps >= kPassageMargin), simply connected and
-//   strictly inside a rectangle, so the free space of that disk among the obstacles is one
-//   connected set; every start and goal point has clearance >= w + ρ > 2r + ρ, the reach of the
-//   robot grasping an object from any side, so the robot can carry any object between any start
-//   and any goal, approaching from any direction. (ii) With every object at its start, any two of
-//   the obstacles, objects and boundary are >= 2r + kPassageMargin apart (objects d - 2ρ >= w - 2ρ,
-//   object–obstacle >= w, obstacle–obstacle and boundary >= w), so the robot alone reaches
-//   every object. (iii) Objects are movable: an object standing on another's goal (class b, or
-//   class a by chance) is first carried to a free spot of the connected free space of (i) —
-//   there is room, since the goals are pairwise disjoint and far from obstacles — and the
-//   sequence then completes. This is the full-knowledge solvability the paper's Fix mode and the
-//   baselines rely on; it is not a proof that a particular planner finds the solution in budget.
+// Clearances (r, ρ, s the region side in use, R = r + ρ + kPairMargin the pair radius of
+// solvability.h):
+//   cg = 2r + ρ + kGraspMargin     object start / goal point / parking spot ↔ every obstacle
+//                                  (the robot can stand anywhere around the object), also
+//                                  >= s/√2 so that regions hold no obstacle;
+//   cb = cg (sparse) or max(ρ + kDenseWallGap, s/2) (dense, see below) ↔ the boundary;
+//   d  = spacing of starts, of goals and of the parking spot: Euclidean >= max(s√2 + 0.1, w)
+//        (sparse, the regions are then disjoint whatever their orientation); Chebyshev >=
+//        s + kDenseRegionGap (dense: the axis-aligned regions are disjoint and objects >= 2ρ +
+//        kDenseRegionGap apart);
+//   the robot start keeps cg from obstacles and the boundary, r + ρ + 0.5 (sparse) or r + ρ +
+//   kDenseRegionGap (dense) from every object start, and its disk enters no region.
+// Dense footprints: the spacing that fits, d_fit = sqrt(kPackingFraction · A_pts / n) (A_pts the
+// area where points may lie, n the points of the most crowded stream), is compared with the
+// sparse d; when it is smaller the instance is "dense": s shrinks to min(region_side, d_fit −
+// kDenseRegionGap) but not below 2ρ + kMinRegionMargin, the spacing becomes Chebyshev s +
+// kDenseRegionGap and cb drops as above (objects near a wall are graspable from the inside
+// only; the certificate's grasp test is one-sided, solvability.h (b)).
 //
-// Determinism (docs/architecture.md, house style 6): every draw comes from rearm::Rng streams
-// derived from spec.seed (one stream each for starts, goals, robot and obstacles, so the same
-// seed gives the same starts in both classes and the same objects, goals and robot at every
-// density). Same spec → the same scenario, bit for bit.
+// Solvability (solvability.h): while obstacles are sampled, a PairRaster (pair_raster.h) of the
+// pair freespace rejects every obstacle after which some start, goal, the blocker or the parking
+// spot has no grasp position connected to the robot start (raster connectivity implies true
+// connectivity); the finished instance is checked once with check_solvability (exact), and for
+// class kSealed with check_seal; an instance that fails is redrawn from the next redraw stream
+// (at most kMaxRedraws times, then rearm::Error). A parking spot (solvability.h (d)) is
+// reserved among the points for every class.
+//
+// Sealed pocket: a C-shaped familiar polygon (wall thickness kWallThickness) around an interior
+// square of side 2·max(cg, s/√2 + slack, w/2 + kMinStub), mouth of width w in the front wall; the
+// goal point of M1 is the interior's centre; B1 (radius ρ) stands on the mouth's axis kBlockerSetback
+// outside it, so the pair (and the robot alone) cannot pass on either side of it, and the pair
+// can once B1 is moved. Other starts, goals, the parking spot and the robot keep out of the
+// pocket's box grown by cg (by robot clearance for the robot) and >= 2ρ + 2R + kDenseRegionGap
+// from B1, so that no object stands in the mouth's approach.
+//
+// Reached densities (GeneratedInstance::achieved_density: the exact area of the obstacles'
+// union, overlaps counted once, over the workspace area; default radii and max_obstacle_side,
+// 10 seeds per cell, Release, 2 cores). Workspace side max(10 m, sqrt(Nπρ²/0.01)) (10, 10, 10,
+// 12.5, 15.3, 17.7 m for N = 1, 2, 4, 8, 12, 16): every cell of N ∈ {1,2,4,8,12,16} x target
+// {0.05,0.15,0.25,0.35} x {random, cyclic, sealed} reached its target for every seed (worst
+// seed >= target, mean <= target + 0.03; the overshoot is one obstacle). Side max(10 m,
+// sqrt(Nπρ²/0.02)) (10 m up to N = 8, 12.5 m for N = 16): all reached up to 0.25, and 0.35
+// for N <= 4; at 0.35, N = 8..16 reach 0.28-0.36 (mean 0.30-0.36). A fixed 10 x 10 m room
+// with N = 16 reaches about 0.25. Footprint densities: 0.03 keeps obstacle densities up to 0.15
+// reachable for N = 8..64; 0.05 reaches 0.05 and, for the cyclic class, 0.15; at 0.1 random
+// instances place almost no obstacle and sealed ones often no pocket; 0.2-0.3 work only for
+// N >= 16 without obstacles (classes random and cyclic; lattice points), and fail with a
+// placement error otherwise (too little room for the robot start or the parking spot). Time
+// per instance: 0.01-0.4 s for random and cyclic cells, 0.05-3.4 s (mean) for sealed cells at
+// 0.35 (exact seal and solvability checks, occasional redraws).
+//
+// Determinism (house style 6): every draw comes from rearm::Rng streams derived from spec.seed
+// (one each for starts, goals, robot, obstacles, the pocket and the parking spot; redraw k > 0
+// offsets every stream by k · kRedrawStreamStride). No global state: instances of different
+// specs may be generated in parallel threads. Same spec → the same scenario, bit for bit.
+// Instances differ from those of the generator before clusters (the rules changed).
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <string_view>
 
+#include "geometry/polygon.h"
 #include "scenario/scenario.h"
+#include "scenario/solvability.h"
 
 namespace rearm::scenario {
 
-// docs/experiments.md, "Monte Carlo runner": class a (random goals) and class b (cyclic shift).
-enum class GoalClass { kRandom, kCyclic };
+enum class GoalClass { kRandom, kCyclic, kSealed };
 
-const char* to_string(GoalClass c);  // "random", "cyclic"
+const char* to_string(GoalClass c);  // "random", "cyclic", "sealed"
 // The inverse of to_string; throws rearm::Error on any other text.
 GoalClass goal_class_from_string(std::string_view text);
 
 // Input ranges, part of the contract below.
-inline constexpr int kMaxInstanceObjects = 12;
-inline constexpr double kMaxObstacleDensity = 0.3;
-// The extra width (m) of every passage beyond the carried pair's diameter (see above).
+inline constexpr int kMaxInstanceObjects = 64;
+inline constexpr double kMaxObstacleDensity = 0.5;
+inline constexpr double kMaxFootprintDensity = 0.3;
+// The default and the smallest extra width (m) of every passage beyond the pair's diameter.
 inline constexpr double kPassageMargin = 0.2;
-// Every obstacle fits in a kMaxObstacleSide square (rectangles and L-shapes: sides <= this;
-// hulls: in a disk of diameter kMaxObstacleSide), so one obstacle adds at most
-// kMaxObstacleSide² m² to the obstacle area.
-inline constexpr double kMaxObstacleSide = 1.6;
+inline constexpr double kMinPassageMargin = 0.05;
+inline constexpr double kMaxPassageMargin = 2.0;
+// Default side (m) of the square every random obstacle fits in (InstanceSpec::max_obstacle_side,
+// in [kMinMaxObstacleSide, kMaxMaxObstacleSide]); one obstacle adds at most its square.
+inline constexpr double kMaxObstacleSide = 3.0;
+inline constexpr double kMinMaxObstacleSide = 0.8;
+inline constexpr double kMaxMaxObstacleSide = 5.0;
 
 struct InstanceSpec {
   int objects = 3;                // N, in [1, kMaxInstanceObjects]
-  double obstacle_density = 0.1;  // target obstacle area / workspace area, in [0, 0.3]
+  double obstacle_density = 0.1;  // target fixed-obstacle area / workspace area, [0, 0.5]
   GoalClass goal_class = GoalClass::kRandom;
   std::uint64_t seed = 0;
-  double unknown_fraction = 0.5;   // probability that a new obstacle is unknown, in [0, 1]
+  double unknown_fraction = 0.5;  // probability that a new obstacle is unknown, in [0, 1]
   // Unknown obstacles are ellipses (48-gons, aspect <= 1.5), strongly convex as the paper
-  // assumes (§II); false: rectangles and hulls of 5-8 random points, whose flat faces break
-  // that assumption (the reactive law can then stop in front of a face).
+  // assumes (§II); false: rectangles and hulls of 5-8 random points.
   bool round_unknown = true;
-  double width = 10, height = 10;  // workspace sides (m), in [0.01, 100]
-  double robot_radius = 0.2;       // r (m), >= 0.01
-  double object_radius = 0.25;     // ρ (m), >= 0.01
-  double region_side = 1.0;        // s (m), >= 2ρ (an object fits in its region)
-  double sensor_range = 3.0;       // R (m), >= 0.01
-  int max_attempts = 2000;         // rejection-sampling attempts per placement, in [1, 1e6]
+  double width = 10, height = 10;  // workspace sides (m), in [0.01, 100]; see footprint_density
+  // Objects' total disk area / workspace area; 0: use width and height; in (0, 0.3]: the
+  // workspace is the square of side sqrt(area / footprint_density) (<= 100 m).
+  double footprint_density = 0;
+  double robot_radius = 0.2;   // r (m), >= 0.01
+  double object_radius = 0.25;  // ρ (m), >= 0.01
+  double region_side = 1.0;     // s (m), >= 2ρ (it shrinks in dense footprints, see above)
+  double sensor_range = 3.0;    // R (m), >= 0.01
+  double passage_margin = kPassageMargin;  // m, in [kMinPassageMargin, kMaxPassageMargin]
+  double max_obstacle_side = kMaxObstacleSide;  // m, see kMaxObstacleSide
+  int max_attempts = 2000;  // rejection-sampling attempts per placement, in [1, 1e6]
+};
+
+// The sealed class's pocket (GeneratedInstance::pocket).
+struct SealedPocket {
+  bool present = false;             // class kSealed only
+  std::string walls;                // name of the familiar polygon (e.g. "P1")
+  geometry::Point goal = geometry::Point::Zero();     // M1's goal point, inside the pocket
+  geometry::Point blocker = geometry::Point::Zero();  // B1's start
+  geometry::Point mouth = geometry::Point::Zero();    // centre of the entrance
+  SealReport seal;                  // check_seal(scenario, M1, B1, goal)
+};
+
+struct GeneratedInstance {
+  Scenario scenario;
+  double achieved_density = 0;   // fixed-obstacle area (shoelace) / workspace area
+  double footprint_density = 0;  // objects' disk area (B1 included) / workspace area
+  bool density_reached = false;  // achieved_density >= spec.obstacle_density
+  bool dense = false;            // the dense spacing rules were in force (see above)
+  double region_side = 0;        // s in use
+  double point_spacing = 0;      // d in use (Euclidean sparse, Chebyshev dense)
+  int redraws = 0;               // redraws after a failed exact check
+  SolvabilityReport solvability; // check_solvability(scenario); always solvable
+  SealedPocket pocket;
 };
 
 // A random instance of the spec. Scenario::name is "random_<class>_n<N>_s<seed>", source "",
@@ -117,12 +167,15 @@ struct InstanceSpec {
 // 4 familiar and 3 unknown obstacles" (with "; obstacle placement stopped after K consecutive
 // failed attempts" when the target density was not reached); controller defaults; simulation
 // time_budget 600 + 300 N s. The achieved density is >= the target unless placement stopped,
-// and below target + kMaxObstacleSide² / (width·height).
+// and below target + max_obstacle_side² / (workspace area). Objects: M1..MN, then B1 (class
+// kSealed, no goal). The result always passes scenario::validate and check_solvability.
 //
-// Throws rearm::Error naming the field for a bad spec (an out-of-range N, density, fraction or
-// attempt count; a non-finite or too small length; region_side < 2 object_radius; a workspace
-// narrower than 2 cb), and naming the spec when an object start, a goal or the robot start
-// cannot be placed in max_attempts attempts. The result always passes scenario::validate.
+// Throws rearm::Error naming the field for a bad spec (out of range, non-finite, region_side <
+// 2 object_radius, a workspace too small for the clearances), and naming the spec when an
+// object start, a goal, the robot start, the parking spot or the pocket cannot be placed in
+// max_attempts attempts, or the exact checks fail kMaxRedraws + 1 times (never a hang).
+GeneratedInstance generate_instance(const InstanceSpec& spec);
+// generate_instance(spec).scenario.
 Scenario random_instance(const InstanceSpec& spec);
 
 }  // namespace rearm::scenario

@@ -488,59 +488,29 @@ TEST(CliTest, BaselineRejectsBadUsage) {
   EXPECT_TRUE(contains(run("baseline --help").out, "planning_time_s"));
 }
 
-TEST(CliTest, CompareAppendsRowsAndResumesWithoutDuplicates) {
+TEST(CliTest, SweepRejectsBadUsageAndBadFilesWithTheKey) {
+  EXPECT_EQ(run("sweep --help").code, 0);
+  EXPECT_TRUE(contains(run("sweep --help").out, "--shard I/N"));
+  EXPECT_EQ(run("sweep").code, 2);
+  EXPECT_EQ(run("sweep experiments/sweeps/smoke.yaml").code, 2);  // no --out
   const std::string dir = temp_dir();
-  const std::string args =
-      "compare --objects 1-2 --seeds 1 --classes cyclic --methods mrs,birrt "
-      "--time-limit 5 --threads 2 --no-plot --out " +
-      dir;
-  const Result first = run(args);
-  ASSERT_EQ(first.code, 0) << first.out;
-  const std::string csv = slurp(dir + "/comparison.csv");
-  auto lines = [](const std::string& text) {
-    std::vector<std::string> out;
-    std::istringstream in(text);
-    for (std::string l; std::getline(in, l);) out.push_back(l);
-    return out;
-  };
-  const auto rows = lines(csv);
-  ASSERT_EQ(rows.size(), 5u) << csv;  // header + 2 object counts x 2 methods
-  EXPECT_EQ(rows[0].rfind("method,class,objects", 0), 0u);
-  // N = 2 cyclic: B1 proves it non-monotone, B2 solves it.
-  bool b1_infeasible = false, b2_solved = false;
-  for (const auto& r : rows) {
-    if (r.rfind("mrs,cyclic,2,", 0) == 0) b1_infeasible = contains(r, ",0,infeasible,");
-    if (r.rfind("birrt,cyclic,2,", 0) == 0) b2_solved = contains(r, ",1,completed,");
-  }
-  EXPECT_TRUE(b1_infeasible) << csv;
-  EXPECT_TRUE(b2_solved) << csv;
-  // Every instance is kept as a scenario file.
-  int files = 0;
-  for (const auto& e : std::filesystem::directory_iterator(dir + "/instances"))
-    files += e.path().extension() == ".yaml";
-  EXPECT_EQ(files, 2);
-  // A rerun finds every row and runs nothing; a cut row is run again, once.
-  const Result again = run(args);
-  EXPECT_EQ(again.code, 0);
-  EXPECT_TRUE(contains(again.out, "4 already in")) << again.out;
-  EXPECT_EQ(lines(slurp(dir + "/comparison.csv")).size(), 5u);
+  EXPECT_EQ(run("sweep experiments/sweeps/smoke.yaml --out " + dir + " --shard 3/3").code, 2);
+  EXPECT_EQ(run("sweep experiments/sweeps/smoke.yaml --out " + dir + " --threads 0").code, 2);
+  EXPECT_EQ(run("sweep experiments/sweeps/smoke.yaml --out " + dir + " --frobnicate").code, 2);
   {
-    std::ofstream cut(dir + "/comparison.csv", std::ios::trunc);
-    cut << rows[0] << "\n" << rows[1] << "\n" << rows[2] << "\n" << rows[3].substr(0, 5);
+    std::ofstream bad(dir + "/bad.yaml");
+    bad << "name: bad\nmethods: [rearm, rrtstar]\nclasses: [random]\nobjects: [1]\n"
+           "densities: [0.1]\nworkspace: {side: 8}\n";
   }
-  const Result resumed = run(args);
-  EXPECT_EQ(resumed.code, 0) << resumed.out;
-  EXPECT_TRUE(contains(resumed.out, "2 already in")) << resumed.out;
-  EXPECT_EQ(lines(slurp(dir + "/comparison.csv")).size(), 6u);  // the cut line stays alone, ignored
-  // Other obstacle shapes are other rows: nothing is taken as already done.
-  const Result polygons = run("compare --objects 1 --seeds 1 --classes cyclic --methods mrs "
-                              "--no-plot --unknown-shapes polygon --out " + dir);
-  EXPECT_EQ(polygons.code, 0) << polygons.out;
-  EXPECT_TRUE(contains(polygons.out, "0 already in")) << polygons.out;
-  EXPECT_EQ(run("compare --unknown-shapes square").code, 2);
-  EXPECT_EQ(run("compare --objects 0-3").code, 2);
-  EXPECT_EQ(run("compare --classes spiral").code, 2);
-  EXPECT_EQ(run("compare --methods rearm,rrtstar").code, 2);
+  const Result unknown = run("sweep " + dir + "/bad.yaml --out " + dir + "/out");
+  EXPECT_EQ(unknown.code, 2);
+  EXPECT_TRUE(contains(unknown.out, "methods[1]: unknown method 'rrtstar'")) << unknown.out;
+  const Result missing = run("sweep /nonexistent.yaml --out " + dir + "/out");
+  EXPECT_EQ(missing.code, 2);
+  EXPECT_TRUE(contains(missing.out, "/nonexistent.yaml: file: cannot read")) << missing.out;
+  EXPECT_EQ(run("sweep merge --out " + dir + "/m").code, 2);
+  EXPECT_EQ(run("sweep merge /nonexistent --out " + dir + "/m").code, 2);
+  EXPECT_EQ(run("sweep report /nonexistent").code, 2);
   std::filesystem::remove_all(dir);
 }
 

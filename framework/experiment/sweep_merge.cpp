@@ -1,0 +1,115 @@
+#include "experiment/sweep_merge.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "core/error.h"
+#include "core/file_io.h"
+#include "experiment/csv.h"
+#include "experiment/sweep_runner.h"
+#include "experiment/trial_columns.h"
+#include "scenario/sweep_file.h"
+
+namespace rearm::experiment {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string read_all(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  if (!in) throw Error(p.string() + ": cannot read");
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// The complete rows of a folder's CSV (a cut last line dropped, counted in torn).
+std::vector<std::vector<std::string>> complete_rows(const fs::path& csv, std::size_t& torn) {
+  std::string text = read_all(csv);
+  const std::size_t end = text.rfind('\n');
+  if (end == std::string::npos || end + 1 < text.size()) {
+    ++torn;
+    text.erase(end == std::string::npos ? 0 : end + 1);
+  }
+  std::istringstream lines(text);
+  std::string line;
+  if (!std::getline(lines, line) || line != trial_header()) {
+    throw Error(csv.string() + ": not a trial log of this version (its header differs)");
+  }
+  std::vector<std::vector<std::string>> rows;
+  for (std::size_t n = 2; std::getline(lines, line); ++n) {
+    std::vector<std::string> f = parse_csv_line(line);
+    if (f.size() != trial_columns().size()) {
+      throw Error(csv.string() + ": line " + std::to_string(n) + " is damaged");
+    }
+    rows.push_back(std::move(f));
+  }
+  return rows;
+}
+
+bool same_result(const std::vector<std::string>& a, const std::vector<std::string>& b) {
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    if (!is_timing_column(trial_columns()[i]) && a[i] != b[i]) return false;
+  }
+  return true;
+}
+
+void copy_instances(const fs::path& from, const fs::path& to) {
+  if (!fs::is_directory(from)) return;
+  for (const auto& e : fs::directory_iterator(from)) {
+    const fs::path target = to / e.path().filename();
+    if (!fs::exists(target)) write_file_atomically(target.string(), read_all(e.path()));
+  }
+}
+
+}  // namespace
+
+MergeSummary merge_sweeps(const std::vector<std::string>& dirs, const std::string& out_dir) {
+  if (dirs.empty()) throw Error("merge: give at least one sweep folder");
+  MergeSummary summary;
+  const std::string spec = read_all(fs::path(dirs.front()) / kSweepCopy);
+  const scenario::SweepFile file =
+      scenario::parse_sweep_file(spec, (fs::path(dirs.front()) / kSweepCopy).string());
+  summary.total_trials = file.trial_count();
+  const std::size_t key = trial_column("key");
+  const std::size_t index = trial_column("trial");
+  std::map<std::string, std::vector<std::string>> rows;
+  for (const std::string& d : dirs) {
+    if (read_all(fs::path(d) / kSweepCopy) != spec) {
+      throw Error("merge: " + d + " holds another sweep than " + dirs.front() +
+                  " (their sweep.yaml differ)");
+    }
+    for (auto& row : complete_rows(fs::path(d) / kTrialsCsv, summary.dropped_torn)) {
+      const auto it = rows.find(row[key]);
+      if (it == rows.end()) {
+        rows.emplace(row[key], std::move(row));
+        continue;
+      }
+      if (!same_result(it->second, row)) {
+        throw Error("merge: trial " + row[index] + " has two different results (in " + d +
+                    " and an earlier folder): rows of different builds?");
+      }
+      ++summary.duplicates;
+    }
+  }
+  std::vector<const std::vector<std::string>*> sorted;
+  for (const auto& [k, row] : rows) sorted.push_back(&row);
+  std::sort(sorted.begin(), sorted.end(), [&](const auto* a, const auto* b) {
+    return std::stoull((*a)[index]) < std::stoull((*b)[index]);
+  });
+  std::string text = trial_header() + "\n";
+  for (const auto* row : sorted) text += csv_line(*row) + "\n";
+  const fs::path out(out_dir);
+  write_file_atomically((out / kTrialsCsv).string(), text);
+  write_file_atomically((out / kSweepCopy).string(), spec);
+  fs::create_directories(out / kInstancesDir);
+  for (const std::string& d : dirs)
+    copy_instances(fs::path(d) / kInstancesDir, out / kInstancesDir);
+  summary.rows = sorted.size();
+  return summary;
+}
+
+}  // namespace rearm::experiment

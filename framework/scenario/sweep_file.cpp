@@ -1,0 +1,281 @@
+// Sweep files (sweep_file.h; format reference experiments/sweeps/README.md).
+#include "scenario/sweep_file.h"
+
+#include <yaml-cpp/yaml.h>
+
+#include <charconv>
+#include <cmath>
+#include <numbers>
+#include <set>
+#include <string>
+#include <system_error>
+#include <vector>
+
+#include "core/error.h"
+#include "scenario/yaml_internal.h"
+
+namespace rearm::scenario {
+namespace {
+
+using detail::Fields;
+using detail::Reader;
+
+constexpr double kMaxSide = 100;  // m: the generator's largest workspace side
+constexpr double kMinSide = 0.5;  // m: below this no robot fits
+constexpr double kMaxFootprint = kMaxFootprintDensity;
+constexpr double kMaxPassageMarginInFile = 2;  // m (random_instance.h, InstanceSpec)
+
+std::string num(double x) {
+  char buf[32];
+  const auto [end, ec] = std::to_chars(buf, buf + sizeof buf, x);
+  return ec == std::errc() ? std::string(buf, end) : "?";
+}
+
+std::uint64_t unsigned64(Reader& r, const YAML::Node& n, const std::string& path) {
+  const std::string& text = r.numeric_text(n, path, "a non-negative integer");
+  std::uint64_t value = 0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (ec != std::errc() || end != text.data() + text.size()) {
+    r.fail(path, "expected a non-negative integer below 2^64, got " + detail::quoted(text));
+  }
+  return value;
+}
+
+double in_range(Reader& r, const YAML::Node& n, const std::string& path, double lo, double hi,
+                bool open_lo = false) {
+  const double x = r.number(n, path);
+  if (x < lo || x > hi || (open_lo && x == lo)) {
+    r.fail(path, "must be in " + std::string(open_lo ? "(" : "[") + num(lo) + ", " + num(hi) +
+                     "], got " + num(x));
+  }
+  return x;
+}
+
+int int_in_range(Reader& r, const YAML::Node& n, const std::string& path, int lo, int hi) {
+  const int x = r.integer(n, path);
+  if (x < lo || x > hi) {
+    r.fail(path, "must be an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) +
+                     "], got " + std::to_string(x));
+  }
+  return x;
+}
+
+// A list (or one scalar, as a list of one) of values read by `item`, non-empty, no repeats.
+template <class T, class ItemFn>
+std::vector<T> list_of(Reader& r, const YAML::Node& n, const std::string& path, ItemFn item) {
+  std::vector<std::pair<YAML::Node, std::string>> items;
+  if (n.IsScalar()) {
+    items.emplace_back(n, path);
+  } else {
+    items = r.items(n, path);
+  }
+  if (items.empty()) r.fail(path, "must list at least one value");
+  std::vector<T> out;
+  for (const auto& [node, p] : items) {
+    T v = item(node, p);
+    for (const T& seen : out) {
+      if (seen == v) r.fail(p, "repeated value");
+    }
+    out.push_back(v);
+  }
+  return out;
+}
+
+WorkspaceRule read_workspace(Reader& r, const YAML::Node& n) {
+  const Fields f(r, n, "workspace", {"side", "sides", "footprint_density", "min_side"});
+  WorkspaceRule w;
+  const int given =
+      (f.find("side") ? 1 : 0) + (f.find("sides") ? 1 : 0) + (f.find("footprint_density") ? 1 : 0);
+  if (given != 1) {
+    r.fail("workspace", "give exactly one of side, sides and footprint_density");
+  }
+  if (const auto v = f.find("side")) {
+    w.kind = WorkspaceRule::Kind::kSide;
+    w.side = in_range(r, *v, "workspace.side", kMinSide, kMaxSide);
+  } else if (const auto v = f.find("sides")) {
+    w.kind = WorkspaceRule::Kind::kSidePerCount;
+    for (const auto& [item, p] : r.items(*v, "workspace.sides")) {
+      if (!item.IsSequence() || item.size() != 2) r.fail(p, "expected a pair [objects, side]");
+      const int objects = int_in_range(r, item[0], p + "[0]", 1, kMaxInstanceObjects);
+      if (w.per_count.count(objects)) r.fail(p, "repeated object count");
+      w.per_count[objects] = in_range(r, item[1], p + "[1]", kMinSide, kMaxSide);
+    }
+    if (w.per_count.empty()) r.fail("workspace.sides", "must list at least one [objects, side]");
+  } else {
+    w.kind = WorkspaceRule::Kind::kFootprint;
+    w.footprint_density = in_range(r, *f.find("footprint_density"), "workspace.footprint_density",
+                                   0, kMaxFootprint, true);
+    if (const auto v = f.find("min_side")) {
+      w.min_side = in_range(r, *v, "workspace.min_side", 0, kMaxSide);
+    }
+  }
+  if (w.kind != WorkspaceRule::Kind::kFootprint && f.find("min_side")) {
+    r.fail("workspace.min_side", "only goes with footprint_density");
+  }
+  return w;
+}
+
+void read_instance(Reader& r, const YAML::Node& n, InstanceSpec& spec) {
+  const Fields f(r, n, "instance",
+                 {"robot_radius", "object_radius", "region_side", "sensor_range", "passage_margin",
+                  "max_obstacle_side", "max_attempts"});
+  auto length = [&](const char* key, double& field) {
+    if (const auto v = f.find(key)) field = in_range(r, *v, f.child(key), 0, 10, true);
+  };
+  length("robot_radius", spec.robot_radius);
+  length("object_radius", spec.object_radius);
+  length("region_side", spec.region_side);
+  length("sensor_range", spec.sensor_range);
+  if (const auto v = f.find("passage_margin")) {
+    spec.passage_margin =
+        in_range(r, *v, "instance.passage_margin", kMinPassageMargin, kMaxPassageMarginInFile);
+  }
+  if (const auto v = f.find("max_obstacle_side")) {
+    spec.max_obstacle_side =
+        in_range(r, *v, "instance.max_obstacle_side", kMinMaxObstacleSide, kMaxMaxObstacleSide);
+  }
+  if (const auto v = f.find("max_attempts")) {
+    spec.max_attempts = int_in_range(r, *v, "instance.max_attempts", 1, 1'000'000);
+  }
+}
+
+void read_lists(Reader& r, const Fields& f, SweepFile& s) {
+  s.methods = list_of<std::string>(r, f.require("methods"), "methods",
+                                   [&](const YAML::Node& n, const std::string& p) {
+                                     std::string m = r.text(n, p);
+                                     if (m.empty()) r.fail(p, "empty method name");
+                                     return m;
+                                   });
+  s.classes = list_of<GoalClass>(r, f.require("classes"), "classes",
+                                 [&](const YAML::Node& n, const std::string& p) {
+                                   try {
+                                     return goal_class_from_string(r.text(n, p));
+                                   } catch (const ScenarioError&) {
+                                     throw;
+                                   } catch (const Error& e) {
+                                     r.fail(p, e.what());
+                                   }
+                                 });
+  s.objects = list_of<int>(r, f.require("objects"), "objects",
+                           [&](const YAML::Node& n, const std::string& p) {
+                             return int_in_range(r, n, p, 1, kMaxInstanceObjects);
+                           });
+  s.densities = list_of<double>(r, f.require("densities"), "densities",
+                                [&](const YAML::Node& n, const std::string& p) {
+                                  return in_range(r, n, p, 0, kMaxObstacleDensity);
+                                });
+  s.unknown_fractions = {0.5};
+  if (const auto v = f.find("unknown_fraction")) {
+    s.unknown_fractions = list_of<double>(
+        r, *v, "unknown_fraction",
+        [&](const YAML::Node& n, const std::string& p) { return in_range(r, n, p, 0, 1); });
+  }
+  s.round_unknown = {true};
+  if (const auto v = f.find("unknown_shapes")) {
+    s.round_unknown =
+        list_of<bool>(r, *v, "unknown_shapes", [&](const YAML::Node& n, const std::string& p) {
+          const std::string t = r.text(n, p);
+          if (t != "round" && t != "polygon") {
+            r.fail(p, "expected round or polygon, got '" + t + "'");
+          }
+          return t == "round";
+        });
+  }
+}
+
+SweepFile read_sweep(Reader& r, const YAML::Node& doc) {
+  const Fields f(r, doc, "",
+                 {"name", "description", "methods", "classes", "objects", "densities", "workspace",
+                  "unknown_fraction", "unknown_shapes", "seeds", "time_limit", "query_limit",
+                  "base_seed", "instance"});
+  SweepFile s;
+  s.source = r.source();
+  s.name = r.text(f.require("name"), "name");
+  if (s.name.empty() ||
+      s.name.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRST"
+                               "UVWXYZ0123456789_-.") != std::string::npos ||
+      s.name[0] == '.' || s.name[0] == '-') {
+    r.fail("name", "must be a file-name-safe word (letters, digits, _ - .), got '" + s.name + "'");
+  }
+  if (const auto v = f.find("description")) s.description = r.text(*v, "description");
+  read_lists(r, f, s);
+  s.workspace = read_workspace(r, f.require("workspace"));
+  if (s.workspace.kind == WorkspaceRule::Kind::kSidePerCount) {
+    for (int n : s.objects) {
+      if (!s.workspace.per_count.count(n)) {
+        r.fail("workspace.sides", "lists no side for " + std::to_string(n) + " objects");
+      }
+    }
+  }
+  if (const auto v = f.find("seeds")) s.seeds = int_in_range(r, *v, "seeds", 1, kMaxSweepSeeds);
+  if (const auto v = f.find("time_limit")) {
+    s.time_limit = in_range(r, *v, "time_limit", 0, kMaxTrialTimeLimit, true);
+  }
+  if (const auto v = f.find("query_limit")) {
+    s.query_limit = int_in_range(r, *v, "query_limit", 0, kMaxQueryLimit);
+  }
+  if (const auto v = f.find("base_seed")) s.base_seed = unsigned64(r, *v, "base_seed");
+  if (const auto v = f.find("instance")) read_instance(r, *v, s.instance);
+  if (s.trial_count() > kMaxSweepTrials) {
+    r.fail("seeds", "the sweep has " + std::to_string(s.trial_count()) + " trials, more than " +
+                        std::to_string(kMaxSweepTrials));
+  }
+  return s;
+}
+
+}  // namespace
+
+double WorkspaceRule::side_for(int objects, double rho) const {
+  switch (kind) {
+    case Kind::kSide:
+      return side;
+    case Kind::kSidePerCount: {
+      const auto it = per_count.find(objects);
+      if (it == per_count.end()) {
+        throw Error("workspace rule: no side for " + std::to_string(objects) + " objects");
+      }
+      return it->second;
+    }
+    case Kind::kFootprint:
+      return std::max(min_side,
+                      std::sqrt(objects * std::numbers::pi * rho * rho / footprint_density));
+  }
+  return side;
+}
+
+std::string WorkspaceRule::describe() const {
+  switch (kind) {
+    case Kind::kSide:
+      return "side " + num(side);
+    case Kind::kSidePerCount:
+      return "sides per N";
+    case Kind::kFootprint:
+      return "footprint " + num(footprint_density) +
+             (min_side > 0 ? " (>= " + num(min_side) + " m)" : "");
+  }
+  return "";
+}
+
+std::size_t SweepFile::trial_count() const {
+  return classes.size() * objects.size() * densities.size() * unknown_fractions.size() *
+         round_unknown.size() * static_cast<std::size_t>(seeds) * methods.size();
+}
+
+SweepFile parse_sweep_file(const std::string& yaml, const std::string& source) {
+  Reader reader(source);
+  const YAML::Node doc = detail::single_document(
+      yaml, source, "sweep", "name, methods, classes, objects, densities and workspace");
+  try {
+    return read_sweep(reader, doc);
+  } catch (const ScenarioError&) {
+    throw;
+  } catch (const YAML::Exception& e) {
+    throw ScenarioError(source, detail::kDocumentKey, std::string("YAML error: ") + e.what());
+  }
+}
+
+SweepFile load_sweep_file(const std::string& path) {
+  return parse_sweep_file(detail::read_text_file(path, "the sweep"), path);
+}
+
+}  // namespace rearm::scenario

@@ -1,0 +1,70 @@
+// Sweep files (experiments/sweeps/README.md): one Monte Carlo study per YAML file — the methods,
+// the goal classes, the object counts, the target obstacle densities, the workspace size per
+// object count, the unknown-obstacle fractions and shapes, the repetitions per cell, the time
+// limit per trial and the base seed. The experiment layer expands it into instances and trials
+// (experiment/sweep_plan.h). Read with the same strict YAML rules as the scenario files
+// (yaml_internal.h) and validated the same way: errors name the file, the key and the reason.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "scenario/random_instance.h"
+
+namespace rearm::scenario {
+
+// How large the square workspace of a cell is, per object count N (so that N and the obstacle
+// density are not confounded): one side for every N, a side per N, or the side that gives the
+// objects a footprint density (total disk area over workspace area), never below min_side.
+struct WorkspaceRule {
+  enum class Kind { kSide, kSidePerCount, kFootprint };
+  Kind kind = Kind::kSide;
+  double side = 10;                 // m, kSide
+  std::map<int, double> per_count;  // N -> side (m), kSidePerCount
+  double footprint_density = 0.05;  // kFootprint
+  double min_side = 0;              // m, kFootprint
+
+  // The side (m) for N objects of radius rho; throws rearm::Error for an N a per-count rule
+  // does not list.
+  double side_for(int objects, double rho) const;
+  // "side 10", "sides per N", "footprint 0.05 (>= 8 m)": for the rows and the plots.
+  std::string describe() const;
+};
+
+struct SweepFile {
+  std::string name;  // file-name safe: it names the output
+  std::string description;
+  std::string source;                // the file it was read from
+  std::vector<std::string> methods;  // checked against the method registry by the caller
+  std::vector<GoalClass> classes;
+  std::vector<int> objects;
+  std::vector<double> densities;  // target obstacle densities
+  WorkspaceRule workspace;
+  std::vector<double> unknown_fractions;  // probability that an obstacle is unknown
+  std::vector<bool> round_unknown;        // unknown shapes: true = ellipses, false = polygons
+  int seeds = 10;                         // repetitions per cell
+  double time_limit = 10;                 // s of planning per baseline trial
+  long query_limit = 0;                   // the baselines' motion queries per trial (0: none)
+  std::uint64_t base_seed = 0;
+  InstanceSpec instance;  // the generator's other settings (radii, region side, ...)
+
+  // Cells × repetitions × methods.
+  std::size_t trial_count() const;
+};
+
+// Bounds of the format (experiments/sweeps/README.md).
+inline constexpr int kMaxSweepSeeds = 100000;
+inline constexpr double kMaxTrialTimeLimit = 3600;  // s
+inline constexpr int kMaxQueryLimit = 100'000'000;
+inline constexpr std::size_t kMaxSweepTrials = 10'000'000;
+
+// Reads and validates a sweep file; throws ScenarioError(file, key, reason) for a missing or
+// unreadable file, malformed YAML, an unknown or repeated key, a missing required key, a value
+// of the wrong type or outside its range, an empty or repeated list entry, an unknown goal class
+// or shape, and a sweep of more than kMaxSweepTrials trials.
+SweepFile load_sweep_file(const std::string& path);
+SweepFile parse_sweep_file(const std::string& yaml, const std::string& source = "<string>");
+
+}  // namespace rearm::scenario

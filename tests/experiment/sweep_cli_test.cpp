@@ -1,0 +1,230 @@
+// The Monte Carlo runner end to end through the real `rearm sweep` program on
+// experiments/sweeps/smoke.yaml: the same rows (timing columns aside) for 1 and 2 threads, the
+// union of 3 shards equal to the unsharded run, a run killed with SIGKILL and run again losing
+// and duplicating nothing, Debian's ompl_benchmark_statistics reading the OMPL logs into SQLite
+// with one `runs` row per trial, and the kept instance files reproducing their rows through
+// `rearm run` and `rearm baseline`.
+#include <fcntl.h>
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "experiment/csv.h"
+#include "experiment/trial_columns.h"
+#include "scenario/sweep_file.h"
+
+namespace rearm::experiment {
+namespace {
+
+namespace fs = std::filesystem;
+
+const char* const kSmoke = "experiments/sweeps/smoke.yaml";
+
+fs::path work_dir() {
+  static const fs::path d = [] {
+    const fs::path p = fs::temp_directory_path() / ("rearm_sweep_cli_" + std::to_string(getpid()));
+    fs::remove_all(p);
+    fs::create_directories(p);
+    return p;
+  }();
+  return d;
+}
+
+int run(const std::string& args) {
+  const std::string cmd = std::string(REARM_CLI_PATH) + " " + args + " > /dev/null 2>&1";
+  const int status = std::system(cmd.c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+int sweep(const std::string& out, const std::string& extra = "") {
+  return run(std::string("sweep ") + kSmoke + " --out " + out + " --quiet " + extra);
+}
+
+// key -> the row's non-timing fields.
+using Rows = std::map<std::string, std::vector<std::string>>;
+
+Rows rows_of(const fs::path& csv, std::size_t* count = nullptr) {
+  const CsvTable t = read_csv(csv.string());
+  EXPECT_EQ(t.header, trial_columns());
+  Rows rows;
+  for (const auto& row : t.rows) {
+    std::vector<std::string> kept;
+    for (std::size_t i = 0; i < row.size(); ++i) {
+      if (!is_timing_column(t.header[i])) kept.push_back(row[i]);
+    }
+    EXPECT_TRUE(rows.emplace(row[t.column("key")], kept).second) << "duplicate " << row[1];
+  }
+  if (count != nullptr) *count = t.rows.size();
+  return rows;
+}
+
+std::size_t smoke_trials() { return scenario::load_sweep_file(kSmoke).trial_count(); }
+
+class SweepCli : public ::testing::Test {
+ protected:
+  // The reference: the smoke sweep unsharded on one thread, run once for the suite.
+  static void SetUpTestSuite() {
+    reference_dir_ = new fs::path(work_dir() / "one_thread");
+    ASSERT_EQ(sweep(reference_dir_->string(), "--threads 1"), 0);
+  }
+  static void TearDownTestSuite() {
+    delete reference_dir_;
+    fs::remove_all(work_dir());
+  }
+  static Rows reference() { return rows_of(*reference_dir_ / "trials.csv"); }
+  static fs::path* reference_dir_;
+};
+fs::path* SweepCli::reference_dir_ = nullptr;
+
+TEST_F(SweepCli, EveryTrialOnceAndTheSameRowsOnTwoThreads) {
+  std::size_t count = 0;
+  const Rows one = rows_of(*reference_dir_ / "trials.csv", &count);
+  EXPECT_EQ(count, smoke_trials());
+  EXPECT_EQ(one.size(), smoke_trials());
+  const fs::path two = work_dir() / "two_threads";
+  ASSERT_EQ(sweep(two.string(), "--threads 2"), 0);
+  EXPECT_EQ(rows_of(two / "trials.csv"), one);
+  // A rerun into a finished folder runs nothing and adds nothing.
+  ASSERT_EQ(sweep(two.string(), "--threads 2"), 0);
+  std::size_t again = 0;
+  rows_of(two / "trials.csv", &again);
+  EXPECT_EQ(again, smoke_trials());
+}
+
+TEST_F(SweepCli, TheUnionOfThreeShardsIsTheUnshardedRun) {
+  std::string dirs;
+  for (int i = 0; i < 3; ++i) {
+    const fs::path d = work_dir() / ("shard_" + std::to_string(i));
+    ASSERT_EQ(sweep(d.string(), "--threads 2 --shard " + std::to_string(i) + "/3"), 0);
+    dirs += " " + d.string();
+  }
+  const fs::path merged = work_dir() / "merged";
+  ASSERT_EQ(run("sweep merge" + dirs + " --out " + merged.string()), 0);
+  EXPECT_EQ(rows_of(merged / "trials.csv"), reference());
+  // Shard folders are not interchangeable: a rerun of shard 0 into shard 1's folder is refused.
+  EXPECT_NE(sweep((work_dir() / "shard_1").string(), "--shard 0/3"), 0);
+}
+
+std::size_t data_lines(const fs::path& csv) {
+  std::ifstream in(csv);
+  std::size_t n = 0;
+  std::string line;
+  while (std::getline(in, line)) ++n;
+  return n == 0 ? 0 : n - 1;
+}
+
+TEST_F(SweepCli, AKilledSweepRunAgainLosesAndDuplicatesNothing) {
+  const fs::path d = work_dir() / "killed";
+  const pid_t pid = fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    const int null = ::open("/dev/null", O_WRONLY);
+    dup2(null, 1);
+    dup2(null, 2);
+    const std::string out = d.string();
+    execl(REARM_CLI_PATH, REARM_CLI_PATH, "sweep", kSmoke, "--out", out.c_str(), "--threads", "2",
+          "--quiet", static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  // Kill it once a few rows are on disk (bounded wait: the whole smoke sweep takes < 2 min).
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(5);
+  while (data_lines(d / "trials.csv") < 3 && std::chrono::steady_clock::now() < deadline) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  ASSERT_EQ(kill(pid, SIGKILL), 0);
+  int status = 0;
+  ASSERT_EQ(waitpid(pid, &status, 0), pid);
+  ASSERT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL) << "it finished before the kill";
+  const std::size_t before = data_lines(d / "trials.csv");
+  ASSERT_GE(before, 3u);
+  ASSERT_LT(before, smoke_trials());
+  ASSERT_EQ(sweep(d.string(), "--threads 2"), 0);
+  std::size_t count = 0;
+  const Rows after = rows_of(d / "trials.csv", &count);  // fails on duplicates
+  EXPECT_EQ(count, smoke_trials());
+  EXPECT_EQ(after, reference());
+}
+
+TEST_F(SweepCli, OmplBenchmarkStatisticsReadsTheLogs) {
+  ASSERT_EQ(run("sweep report " + reference_dir_->string() + " --no-plot"), 0);
+  std::string logs;
+  for (const auto& e : fs::directory_iterator(*reference_dir_ / "ompl")) {
+    logs += " " + e.path().string();
+  }
+  ASSERT_FALSE(logs.empty());
+  const fs::path db = work_dir() / "sweep.db";
+  const std::string stats = "ompl_benchmark_statistics" + logs + " -d " + db.string() + " > " +
+                            (work_dir() / "stats.log").string() + " 2>&1";
+  ASSERT_EQ(std::system(stats.c_str()), 0) << "see " << (work_dir() / "stats.log");
+  const fs::path counts = work_dir() / "counts.txt";
+  const std::string query =
+      "python3 -c 'import sqlite3,sys; c=sqlite3.connect(sys.argv[1]); "
+      "print(c.execute(\"select count(*) from runs\").fetchone()[0]); "
+      "print(c.execute(\"select count(*) from runs where solved=1\").fetchone()[0]); "
+      "print(c.execute(\"select count(distinct objects) from experiments\").fetchone()[0])' " +
+      db.string() + " > " + counts.string();
+  ASSERT_EQ(std::system(query.c_str()), 0);
+  std::ifstream in(counts);
+  std::size_t runs = 0, solved = 0, object_counts = 0;
+  in >> runs >> solved >> object_counts;
+  EXPECT_EQ(runs, smoke_trials());
+  std::size_t successes = 0;
+  const CsvTable t = read_csv((*reference_dir_ / "trials.csv").string());
+  for (const auto& row : t.rows) successes += row[t.column("success")] == "1";
+  EXPECT_EQ(solved, successes);
+  EXPECT_EQ(object_counts, scenario::load_sweep_file(kSmoke).objects.size());
+}
+
+// The value of "key": in a metrics.json written by the JSON writer ("" when absent).
+std::string json_value(const std::string& json, const std::string& key) {
+  const std::string k = "\"" + key + "\": ";
+  const std::size_t at = json.find(k);
+  if (at == std::string::npos) return "";
+  std::size_t end = json.find_first_of(",\n}", at + k.size());
+  std::string v = json.substr(at + k.size(), end - at - k.size());
+  if (!v.empty() && v.front() == '"') v = v.substr(1, v.size() - 2);
+  return v;
+}
+
+TEST_F(SweepCli, KeptInstancesReproduceTheirRows) {
+  const CsvTable t = read_csv((*reference_dir_ / "trials.csv").string());
+  int checked = 0;
+  for (const auto& row : t.rows) {
+    const std::string method = row[t.column("method")];
+    if (row[t.column("status")] != "completed" || (method != "rearm" && method != "mrs")) continue;
+    const fs::path instance = *reference_dir_ / "instances" / (row[t.column("instance")] + ".yaml");
+    ASSERT_TRUE(fs::exists(instance)) << instance;
+    const fs::path out = work_dir() / ("rerun_" + row[t.column("trial")]);
+    const std::string args =
+        method == "rearm"
+            ? "run " + instance.string() + " --no-plot --no-animation --out " + out.string()
+            : "baseline " + instance.string() + " --method " + method + " --seed " +
+                  row[t.column("planner_seed")] + " --time-limit " + row[t.column("time_limit_s")] +
+                  " --no-plot --no-animation --out " + out.string();
+    ASSERT_EQ(run(args), 0) << args;
+    std::ifstream in(out / "metrics.json");
+    std::stringstream json;
+    json << in.rdbuf();
+    EXPECT_EQ(json_value(json.str(), "status"), "completed") << args;
+    EXPECT_DOUBLE_EQ(std::stod(json_value(json.str(), "sim_time_s")),
+                     std::stod(row[t.column("sim_time_s")]))
+        << args;
+    ++checked;
+  }
+  EXPECT_GE(checked, 2) << "the smoke sweep completed too few rearm and mrs trials to check";
+}
+
+}  // namespace
+}  // namespace rearm::experiment

@@ -1,0 +1,108 @@
+// Expanding a sweep (experiment/sweep_plan.h): the canonical order and counts, seeds that
+// depend on (base seed, N, repetition) only, shards that partition the trials exactly, and
+// unknown methods rejected with the key.
+#include "experiment/sweep_plan.h"
+
+#include <gtest/gtest.h>
+
+#include <map>
+#include <set>
+
+#include "experiment/rearm_method.h"
+#include "experiment/trial_columns.h"
+#include "scenario/scenario_io.h"
+
+namespace rearm::experiment {
+namespace {
+
+class Stub final : public Method {
+ public:
+  explicit Stub(std::string n) : n_(std::move(n)) {}
+  std::string name() const override { return n_; }
+  std::string summary() const override { return "stub"; }
+  TrialOutcome run(const scenario::Scenario&, const MethodInput&) const override { return {}; }
+
+ private:
+  std::string n_;
+};
+
+MethodRegistry registry() {
+  MethodRegistry r;
+  r.add(make_rearm_method());
+  r.add(std::make_unique<Stub>("birrt"));
+  return r;
+}
+
+scenario::SweepFile file() {
+  return scenario::parse_sweep_file(
+      "name: p\nmethods: [rearm, birrt]\nclasses: [random, cyclic, sealed]\nobjects: [1, 3]\n"
+      "densities: [0.05, 0.3]\nworkspace: {sides: [[1, 7], [3, 9]]}\nunknown_shapes: "
+      "[round, polygon]\nseeds: 4\ntime_limit: 3\nbase_seed: 11\n");
+}
+
+TEST(SweepPlan, ExpandsCellsRepetitionsAndMethodsInCanonicalOrder) {
+  const SweepPlan p = plan_sweep(file(), registry());
+  EXPECT_EQ(p.instances.size(), 3u * 2 * 2 * 2 * 4);
+  EXPECT_EQ(p.trials.size(), p.instances.size() * 2);
+  EXPECT_EQ(p.total_trials, p.trials.size());
+  for (std::size_t i = 0; i < p.trials.size(); ++i) {
+    const TrialJob& t = p.trials[i];
+    EXPECT_EQ(t.index, i);
+    EXPECT_EQ(t.instance, i / 2);
+    EXPECT_EQ(t.settings.method, i % 2 == 0 ? "rearm" : "birrt");
+    EXPECT_EQ(t.settings.time_limit_s, 3);
+    const scenario::InstanceSpec& s = t.settings.instance;
+    EXPECT_EQ(s.width, s.objects == 1 ? 7 : 9);
+    EXPECT_EQ(s.seed, instance_seed(11, s.objects, t.settings.rep));
+    EXPECT_EQ(t.settings.planner_seed, planner_seed(s.seed, t.settings.method));
+  }
+  // Common random numbers: one seed per (N, repetition), shared by every class and density.
+  std::map<std::pair<int, int>, std::set<std::uint64_t>> seeds;
+  std::set<std::uint64_t> all;
+  for (const InstanceJob& j : p.instances) {
+    seeds[{j.spec.objects, j.rep}].insert(j.spec.seed);
+    all.insert(j.spec.seed);
+  }
+  for (const auto& [cell, s] : seeds) EXPECT_EQ(s.size(), 1u);
+  EXPECT_EQ(all.size(), 2u * 4);
+  EXPECT_NE(instance_seed(11, 3, 0), instance_seed(12, 3, 0));
+}
+
+TEST(SweepPlan, ShardsPartitionTheTrials) {
+  const SweepPlan p = plan_sweep(file(), registry());
+  for (int count : {1, 2, 3, 7, 200}) {
+    std::multiset<std::size_t> seen;
+    for (int i = 0; i < count; ++i) {
+      const SweepPlan s = shard_of(p, Shard{i, count});
+      EXPECT_EQ(s.total_trials, p.total_trials);
+      for (const TrialJob& t : s.trials) {
+        seen.insert(t.index);
+        // Both methods of an instance in the same shard, with the instance it names.
+        EXPECT_EQ(s.instances[t.instance].index, p.trials[t.index].instance);
+        EXPECT_EQ(key_column(t.settings), key_column(p.trials[t.index].settings));
+      }
+    }
+    EXPECT_EQ(seen.size(), p.trials.size());
+    for (std::size_t i = 0; i < p.trials.size(); ++i) EXPECT_EQ(seen.count(i), 1u) << i;
+  }
+  EXPECT_EQ(parse_shard("2/5").index, 2);
+  EXPECT_EQ(parse_shard("2/5").count, 5);
+  for (const char* bad : {"5/5", "-1/3", "1", "a/3", "1/0", "1/3x", "/"}) {
+    EXPECT_THROW(parse_shard(bad), Error) << bad;
+  }
+}
+
+TEST(SweepPlan, UnknownMethodsNameTheirKey) {
+  scenario::SweepFile f = file();
+  f.methods.push_back("rrtstar");
+  try {
+    plan_sweep(f, registry());
+    FAIL();
+  } catch (const scenario::ScenarioError& e) {
+    EXPECT_EQ(e.key(), "methods[2]");
+    EXPECT_NE(e.reason().find("known: rearm, birrt"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace rearm::experiment

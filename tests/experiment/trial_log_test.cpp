@@ -1,0 +1,172 @@
+// The sweep's CSV (experiment/csv.h, trial_log.h): RFC 4180 quoting read back by an
+// independent reader (Python's csv module, run as a real process), a cut last line dropped on
+// resume and its trial counted as not done, damage in the middle refused, the header checked.
+#include "experiment/trial_log.h"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "core/error.h"
+#include "experiment/csv.h"
+#include "experiment/trial_columns.h"
+
+namespace rearm::experiment {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path temp_dir(const std::string& name) {
+  const fs::path d =
+      fs::temp_directory_path() / ("rearm_trial_log_" + name + "_" + std::to_string(::getpid()));
+  fs::remove_all(d);
+  fs::create_directories(d);
+  return d;
+}
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+TrialRecord record(std::size_t index, const std::string& reason) {
+  TrialRecord r;
+  r.index = index;
+  r.sweep = "t";
+  r.settings.method = "rearm";
+  r.settings.instance.seed = 100 + index;
+  r.settings.workspace_rule = "side 10";
+  r.outcome.status = TrialStatus::kStuck;
+  r.outcome.reason = reason;
+  r.provenance = Provenance{"rev", "host", "cpu, with a comma"};
+  return r;
+}
+
+TEST(Csv, QuotedFieldsReadBackByPythonsCsvModule) {
+  const std::vector<std::string> fields = {"plain", "a,b", "say \"hi\"", "", "line\nbreak"};
+  const fs::path d = temp_dir("python");
+  {
+    std::ofstream out(d / "x.csv");
+    out << csv_line(fields) << "\n";
+  }
+  const std::string cmd =
+      "python3 -c 'import csv,sys; r=next(csv.reader(open(sys.argv[1]))); "
+      "print(len(r)); print(\"|\".join(r))' " +
+      (d / "x.csv").string() + " > " + (d / "out.txt").string();
+  ASSERT_EQ(std::system(cmd.c_str()), 0);
+  EXPECT_EQ(slurp(d / "out.txt"), "5\nplain|a,b|say \"hi\"||line break\n");
+  EXPECT_EQ(parse_csv_line(csv_line(fields)),
+            (std::vector<std::string>{"plain", "a,b", "say \"hi\"", "", "line break"}));
+  EXPECT_THROW(parse_csv_line("\"open"), Error);
+  EXPECT_THROW(parse_csv_line("\"a\"b"), Error);
+}
+
+TEST(TrialLog, ANewFileGetsTheHeaderAndRowsAreDurableLines) {
+  const fs::path d = temp_dir("new");
+  const fs::path csv = d / "sub" / "trials.csv";
+  {
+    TrialLog log(csv.string());
+    EXPECT_TRUE(log.done().empty());
+    log.append(trial_row(record(0, "a, b")));
+    log.append(trial_row(record(1, "c")));
+  }
+  const CsvTable t = read_csv(csv.string());
+  EXPECT_EQ(t.header, trial_columns());
+  ASSERT_EQ(t.rows.size(), 2u);
+  EXPECT_EQ(t.rows[0][t.column("reason")], "a, b");
+  EXPECT_EQ(t.rows[1][t.column("trial")], "1");
+  TrialLog again(csv.string());
+  EXPECT_EQ(again.done().size(), 2u);
+  EXPECT_FALSE(again.dropped_torn_line());
+}
+
+TEST(TrialLog, ACutLastLineIsDroppedAndItsTrialIsNotDone) {
+  const fs::path d = temp_dir("torn");
+  const fs::path csv = d / "trials.csv";
+  const std::string full = trial_row(record(7, "complete"));
+  const std::string cut = trial_row(record(8, "cut"));
+  {
+    std::ofstream out(csv, std::ios::binary);
+    out << trial_header() << "\n" << full << "\n" << cut.substr(0, cut.size() / 2);
+  }
+  TrialLog log(csv.string());
+  EXPECT_TRUE(log.dropped_torn_line());
+  EXPECT_EQ(log.done().size(), 1u);
+  EXPECT_TRUE(log.done().count(key_column(record(7, "").settings)));
+  EXPECT_FALSE(log.done().count(key_column(record(8, "").settings)));
+  log.append(cut);
+  EXPECT_EQ(slurp(csv), trial_header() + "\n" + full + "\n" + cut + "\n");
+}
+
+TEST(TrialLog, DamageInTheMiddleAndAForeignHeaderAreRefused) {
+  const fs::path d = temp_dir("damaged");
+  {
+    std::ofstream out(d / "mid.csv", std::ios::binary);
+    out << trial_header() << "\n1,2,3\n" << trial_row(record(1, "x")) << "\n";
+  }
+  EXPECT_THROW(TrialLog((d / "mid.csv").string()), Error);
+  {
+    std::ofstream out(d / "other.csv", std::ios::binary);
+    out << "method,class,objects\nrearm,random,1\n";
+  }
+  try {
+    TrialLog log((d / "other.csv").string());
+    FAIL() << "a foreign header was accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("header differs"), std::string::npos) << e.what();
+  }
+}
+
+TEST(TrialColumns, KeysDifferForEverySettingThatChangesAResult) {
+  TrialSettings a;
+  a.method = "rearm";
+  const std::string k = key_column(a);
+  auto differs = [&](auto change) {
+    TrialSettings b = a;
+    change(b);
+    return key_column(b) != k;
+  };
+  EXPECT_TRUE(differs([](TrialSettings& s) { s.time_limit_s = 3; }));
+  EXPECT_TRUE(differs([](TrialSettings& s) { s.method = "birrt"; }));
+  EXPECT_TRUE(differs([](TrialSettings& s) { s.planner_seed = 9; }));
+  EXPECT_TRUE(differs([](TrialSettings& s) { s.instance.seed = 9; }));
+  EXPECT_TRUE(differs([](TrialSettings& s) { s.instance.obstacle_density = 0.2; }));
+  EXPECT_TRUE(differs([](TrialSettings& s) { s.instance.width = 11; }));
+  EXPECT_TRUE(differs([](TrialSettings& s) { s.instance.round_unknown = false; }));
+  EXPECT_TRUE(differs([](TrialSettings& s) { s.instance.unknown_fraction = 0.1; }));
+  EXPECT_TRUE(differs([](TrialSettings& s) { s.instance.passage_margin = 0.1; }));
+  EXPECT_TRUE(
+      differs([](TrialSettings& s) { s.instance.goal_class = scenario::GoalClass::kSealed; }));
+  EXPECT_FALSE(differs([](TrialSettings& s) { s.rep = 4; }));  // the seed carries it
+}
+
+TEST(TrialColumns, OneSuccessRule) {
+  TrialOutcome o;
+  o.status = TrialStatus::kCompleted;
+  o.goals_reached = true;
+  EXPECT_TRUE(is_success(o));
+  o.collisions = 1;
+  EXPECT_FALSE(is_success(o));
+  o.collisions = 0;
+  o.goals_reached = false;
+  EXPECT_FALSE(is_success(o));
+  o.goals_reached = true;
+  o.status = TrialStatus::kTimeout;
+  EXPECT_FALSE(is_success(o));
+  for (int i = 0; i < kTrialStatusCount; ++i) {
+    const auto s = static_cast<TrialStatus>(i);
+    EXPECT_EQ(trial_status_from_string(to_string(s)), s);
+  }
+  EXPECT_THROW(trial_status_from_string("done"), Error);
+}
+
+}  // namespace
+}  // namespace rearm::experiment
