@@ -33,6 +33,7 @@ ASAN_TESTS+=";progress_monitor_test;kinematic_plant_test;interface_layer_test;ex
 ASAN_TESTS+=";scenario_io_test;convex_pieces_test;sim_world_test;json_writer_test;file_io_test;run_scenario_test"
 ASAN_TESTS+=";random_instance_test;motion_query_test;planners_test;executor_test;validator_test"
 ASAN_TESTS+=";run_baseline_test;solvability_test;sweep_file_test;sweep_plan_test;trial_log_test"
+ASAN_TESTS+=";sweep_runner_test"
 cmake -S . -B "$ASAN_BUILD" -DCMAKE_BUILD_TYPE=Debug -DREARM_SANITIZE=ON -DREARM_WERROR=ON \
   -DREARM_BUILD_TESTS=ON -DREARM_BUILD_BENCH=OFF "-DREARM_TESTS=$ASAN_TESTS"
 cmake --build "$ASAN_BUILD" -j"$JOBS"

@@ -8,7 +8,10 @@
 //
 // Two phases: the instances that still have unfinished trials are generated (in parallel),
 // then the trials run (in parallel, the largest object counts first to shorten the tail). Rows
-// are identical, timing columns aside, for any thread count and any shard.
+// are identical, timing columns aside, for any thread count and any shard, as long as no
+// trial is cut by a wall-clock limit: the baselines' deterministic budget is the sweep file's
+// query_limit, and a row that ends `timeout` (the time_limit safety net bound first) depends on
+// the machine's speed and load.
 #pragma once
 
 #include <cstdio>
