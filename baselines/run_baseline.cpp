@@ -175,9 +175,13 @@ void run_replanning(const scenario::Scenario& s, const RearrangementProblem& ful
       r.queries += ctx.queries;
       r.nodes += ctx.nodes;
       if (!c.move) {
-        r.status = c.failure == MoveFailure::kTimeout ? "timeout" : "unsolved";
-        r.reason = std::string("replan: the held object's transfer cannot be continued: ") +
-                   to_string(c.failure);
+        // A spent query budget is the deterministic limit (unsolved), not the wall clock.
+        const bool clock = c.failure == MoveFailure::kTimeout && !ctx.out_of_queries();
+        r.status = clock ? "timeout" : "unsolved";
+        r.reason =
+            std::string("replan: the held object's transfer cannot be continued: ") +
+            (ctx.out_of_queries() ? "query limit of " + std::to_string(o.query_limit) + " reached"
+                                  : std::string(to_string(c.failure)));
         break;
       }
       c.move->held_at_start = true;

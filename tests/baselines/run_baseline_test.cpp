@@ -110,6 +110,32 @@ TEST(RunBaseline, SameSeedSameMetricsApartFromTiming) {
   EXPECT_NE(a.find("\"planning_time_s\""), std::string::npos);
 }
 
+// The query budget (BaselineOptions::query_limit) ends B2 on the unsolvable pocket instance
+// before its generous time limit: status unsolved with the budget named, exactly the budget's
+// queries spent, and the same search (nodes, subqueries) in two runs, as the sweeps need.
+TEST(RunBaseline, QueryLimitEndsTheSearchTheSameWayEveryTime) {
+  const auto s = load("pocket");
+  for (const Method m : {Method::kBirrt}) {
+    BaselineOptions o;
+    o.method = m;
+    o.seed = 3;
+    o.time_limit = 120;
+    o.query_limit = 150;
+    const BaselineRecord a = run_baseline(s, o);
+    const BaselineRecord b = run_baseline(s, o);
+    EXPECT_EQ(a.status, "unsolved") << to_string(m) << ": " << a.reason;
+    EXPECT_NE(a.reason.find("query limit of 150"), std::string::npos) << a.reason;
+    EXPECT_EQ(a.queries, 150) << to_string(m);
+    EXPECT_LT(a.planning_time_s, 60) << "the wall clock, not the budget, ended it";
+    EXPECT_EQ(a.nodes, b.nodes);
+    EXPECT_EQ(a.subqueries, b.subqueries);
+    EXPECT_EQ(a.reason, b.reason);
+  }
+  BaselineOptions bad;
+  bad.query_limit = -1;
+  EXPECT_THROW(run_baseline(s, bad), Error);
+}
+
 TEST(RunBaseline, MetricsCarryEveryKeyOfRearmRun) {
   const auto s = load("fig3");
   experiment::RunOptions o;
