@@ -119,14 +119,14 @@ TEST(RunBaseline, QueryLimitEndsTheSearchTheSameWayEveryTime) {
     BaselineOptions o;
     o.method = m;
     o.seed = 3;
-    o.time_limit = 120;
-    o.query_limit = 150;
+    // Generous: a sanitized Debug build spends about 2 s per query on this instance.
+    o.time_limit = 1000;
+    o.query_limit = 10;
     const BaselineRecord a = run_baseline(s, o);
     const BaselineRecord b = run_baseline(s, o);
     EXPECT_EQ(a.status, "unsolved") << to_string(m) << ": " << a.reason;
-    EXPECT_NE(a.reason.find("query limit of 150"), std::string::npos) << a.reason;
-    EXPECT_EQ(a.queries, 150) << to_string(m);
-    EXPECT_LT(a.planning_time_s, 60) << "the wall clock, not the budget, ended it";
+    EXPECT_NE(a.reason.find("query limit of 10"), std::string::npos) << a.reason;
+    EXPECT_EQ(a.queries, 10) << to_string(m);
     EXPECT_EQ(a.nodes, b.nodes);
     EXPECT_EQ(a.subqueries, b.subqueries);
     EXPECT_EQ(a.reason, b.reason);
