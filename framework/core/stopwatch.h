@@ -1,6 +1,6 @@
-// Wall-clock accounting for the compute split of a run (docs/experiments.md's rows: mission
-// controller, topology checks, diffeomorphism rebuilds, control): a scope adds its duration to
-// a running total. Steady clock, so a change of the system time never gives a negative share.
+// Wall-clock accounting for the compute split of a run (experiments/sweeps/README.md, the
+// columns mission, topology, rebuild and control time): a scope adds its duration to a running
+// total. Steady clock, so a change of the system time never gives a negative share.
 #pragma once
 
 #include <chrono>

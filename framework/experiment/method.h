@@ -1,4 +1,4 @@
-// The plug point of the Monte Carlo runner (docs/architecture.md, house style 2: inheritance only
+// The plug point of the Monte Carlo runner (house style: inheritance only
 // at real plug points): a method solves one scenario and reports a TrialOutcome. rearm itself
 // is one (rearm_method.h); the OMPL baselines register theirs from baselines/ (nothing in
 // framework/ includes baselines/: the command line wires them into the registry).

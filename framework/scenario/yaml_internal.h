@@ -1,4 +1,4 @@
-// Internal to the scenario module (yaml-cpp stays inside it, docs/architecture.md): the strict
+// Internal to the scenario module (yaml-cpp stays inside that module): the strict
 // YAML reading shared by the scenario files (scenario_io.cpp) and the sweep files
 // (sweep_file.cpp). Every scalar is interpreted here rather than through yaml-cpp's converters,
 // so that numbers are read exactly the same way everywhere: a plain (unquoted) YAML scalar in
