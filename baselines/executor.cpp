@@ -495,6 +495,7 @@ struct PlanExecutor::Impl {
     prev_objects = a;
     log.min_clearance = std::min(log.min_clearance, world.clearance());
     log.collisions = world.collisions() - collisions_before;
+    log.collision_events = world.collision_events();
     ++log.steps;
     log.sim_time = now();
     if (options.record) {
@@ -709,6 +710,7 @@ ExecutionLog PlanExecutor::finish() {
   Impl& m = *impl_;
   interrupt();
   m.log.collisions = m.world.collisions() - m.collisions_before;
+  m.log.collision_events = m.world.collision_events();
   m.log.sim_time = m.world.time();
   m.log.objects_end = m.objects();
   m.log.goals_reached = m.problem.goals_reached(m.log.objects_end);

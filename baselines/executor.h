@@ -74,6 +74,7 @@ struct ExecutionLog {
   ExecStatus status = ExecStatus::kCompleted;
   std::string reason;  // why not completed
   int collisions = 0;  // touching BeginContacts during the executor's steps (sim/)
+  std::vector<std::string> collision_events;  // sim::SimWorld::collision_events, whole run
   double min_clearance = std::numeric_limits<double>::infinity();  // m, ground truth, every step
   double sim_time = 0;                                             // s, world time
   long steps = 0;                                                  // steps taken by the executor

@@ -313,6 +313,9 @@ std::string baseline_metrics_json(const scenario::Scenario& s, const BaselineRec
   j.key("status").value(r.status);
   j.key("reason").value(r.reason);
   j.key("collisions").value(e.collisions);
+  j.key("collision_events").begin_array();
+  for (const std::string& c : e.collision_events) j.value(c);
+  j.end_array();
   j.key("min_clearance").value(e.min_clearance);
   j.key("sim_time_s").value(e.sim_time);
   j.key("steps").value(static_cast<std::int64_t>(e.steps));
@@ -322,6 +325,12 @@ std::string baseline_metrics_json(const scenario::Scenario& s, const BaselineRec
   j.key("controller_time_s").value(r.planning_time_s);
   j.key("real_time_factor").value(e.wall_time > 0 ? e.sim_time / e.wall_time : 0.0);
   j.key("fix_mode_entries").value(0);
+  j.key("recoveries").begin_object();  // rearm's robust variant only
+  for (const char* k :
+       {"guides", "back_outs", "singular_switches", "convex_fallbacks", "restores"}) {
+    j.key(k).value(0);
+  }
+  j.end_object();
   j.key("robot_path_length_m").value(e.robot_path_length);
   j.key("object_path_length_m").value(e.object_path_length);
   j.key("rebuilds").value(0);

@@ -30,6 +30,7 @@ ASAN_TESTS+=";diffeomorphism_test;degenerate_input_test;mapped_space_test;local_
 ASAN_TESTS+=";navigation_test"
 ASAN_TESTS+=";grasp_test;kinematics_test;closed_loop_test;topology_check_test;topology_property_test"
 ASAN_TESTS+=";progress_monitor_test;kinematic_plant_test;interface_layer_test;executive_test;end_to_end_test"
+ASAN_TESTS+=";guide_path_test;saddle_test"
 ASAN_TESTS+=";scenario_io_test;convex_pieces_test;sim_world_test;json_writer_test;file_io_test;run_scenario_test"
 ASAN_TESTS+=";random_instance_test;motion_query_test;planners_test;executor_test;validator_test"
 ASAN_TESTS+=";run_baseline_test;solvability_test;sweep_file_test;sweep_plan_test;trial_log_test"

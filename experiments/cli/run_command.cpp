@@ -20,7 +20,7 @@ namespace fs = std::filesystem;
 
 constexpr const char* kUsage =
     "usage: rearm run SCENARIO.yaml [--out DIR] [--seed N] [--plant box2d|kinematic]\n"
-    "                 [--stride N] [--no-plot] [--no-animation]\n\n"
+    "                 [--stride N] [--variant paper|robust] [--no-plot] [--no-animation]\n\n"
     "Runs the scenario's LTL task: mission controller, interface layer (LTL and Fix modes),\n"
     "topology check and reactive controller, in a Box2D world (or on the kinematic plant).\n"
     "Writes DIR/metrics.json (status, collisions, times, actions, path lengths, ...),\n"
@@ -29,6 +29,8 @@ constexpr const char* kUsage =
     "when they are missing). DIR defaults to out/<scenario name>.\n"
     "  --seed N        recorded in the metrics (a fixed scenario draws no random number)\n"
     "  --stride N      steps between trajectory samples (default 10)\n"
+    "  --variant V     override the scenario's controller variant: paper (the paper's\n"
+    "                  choices only) or robust (every extension; experiments/sweeps/README.md)\n"
     "Exit: 0 when the task completed, 1 when it ended infeasible, stuck or by timeout,\n"
     "2 for bad usage or an invalid scenario.\n";
 
@@ -39,6 +41,7 @@ int run_run(const std::vector<std::string>& args) {
   experiment::RunOptions options;
   int stride = 10;
   bool plot = true, animation = true;
+  std::string variant;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     if (a == "--help" || a == "-h") {
@@ -61,6 +64,11 @@ int run_run(const std::vector<std::string>& args) {
       } else {
         throw Error("--plant expects box2d or kinematic, got '" + v + "'");
       }
+    } else if (a == "--variant") {
+      variant = option_value(args, i);
+      if (variant != "paper" && variant != "robust") {
+        throw Error("--variant expects paper or robust, got '" + variant + "'");
+      }
     } else if (a == "--no-plot") {
       plot = false;
     } else if (a == "--no-animation") {
@@ -74,7 +82,10 @@ int run_run(const std::vector<std::string>& args) {
     }
   }
   if (path.empty()) throw Error(std::string("missing SCENARIO.yaml\n") + kUsage);
-  const scenario::Scenario s = scenario::load_scenario(path);
+  scenario::Scenario s = scenario::load_scenario(path);
+  if (!variant.empty()) {
+    scenario::set_variant(s.controller, variant);
+  }
   if (out_dir.empty()) out_dir = (fs::path("out") / s.name).string();
 
   const experiment::RunRecord r = experiment::run_scenario(s, options);
@@ -89,6 +100,13 @@ int run_run(const std::vector<std::string>& args) {
       "m, %d Fix mode entries, %zu actions\n",
       t.sim_time, t.wall_time, r.real_time_factor(), t.collisions, t.min_clearance,
       t.fix_mode_entries, t.actions.size());
+  if (s.controller.variant == "robust") {
+    std::printf(
+        "  recoveries (%s variant): %d guide paths, %d back-ups, %d singular switches, "
+        "%d convex fallbacks, %d restores\n",
+        s.controller.variant.c_str(), t.recoveries.guides, t.recoveries.back_outs,
+        t.recoveries.singular, t.recoveries.fallbacks, t.recoveries.restores);
+  }
   std::printf("wrote %s and %s\n", metrics.string().c_str(), trajectory.string().c_str());
 
   if (plot) {

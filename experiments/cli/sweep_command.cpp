@@ -51,7 +51,7 @@ constexpr const char* kUsage =
 
 experiment::MethodRegistry registry() {
   experiment::MethodRegistry r;
-  r.add(experiment::make_rearm_method());
+  experiment::register_rearm_methods(r);
   baselines::register_methods(r);
   return r;
 }

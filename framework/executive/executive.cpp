@@ -1,5 +1,6 @@
 #include "executive/executive.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -64,6 +65,14 @@ void validate(const ExecutiveParams& p) {
   reactive::validate(p.diffeo);
   reactive::validate(p.nav);
   validate(p.progress);
+  validate(p.guide);
+  if (!std::isfinite(p.robust.back_out_step) || !(p.robust.back_out_step > 0) ||
+      p.robust.max_back_outs < 0 || !std::isfinite(p.robust.contact_margin) ||
+      p.robust.contact_margin < 0 || p.robust.contact_margin > p.robot_radius) {
+    throw Error(
+        "executive: back_out_step must be finite and > 0, max_back_outs >= 0, contact_margin in "
+        "[0, robot_radius]");
+  }
 }
 
 const char* to_string(TaskStatus s) {
@@ -118,6 +127,7 @@ Executive::Executive(const ExecutiveParams& params, const std::vector<RegionOfIn
       map_(map),
       controller_(params.diffeo, params.nav) {
   validate(p_);
+  controller_.set_convex_fallback(p_.robust.convex_fallback);
 }
 
 Executive::Activity Executive::make(Kind kind, std::string object, std::string region, bool fix,
@@ -188,6 +198,7 @@ bool Executive::fetch_ltl(double t) {
         finish(TaskStatus::kInfeasible, "mission infeasible: " + mission_.reason(), t);
         break;
       case symbolic::MissionStatus::Accepting:
+        if (restore_next(t)) return true;
         finish(TaskStatus::kCompleted,
                "mission complete: the automaton stays in an accepting state", t);
         break;
@@ -367,7 +378,7 @@ Executive::Advance Executive::advance(Activity& a, const Pose& pose, double t, d
     case Phase::kBackOff: {
       const geometry::Disk m = *map_.object(a.object);
       const double need =
-          geometry::disk_polygon_circumradius(m.radius + r + geometry::kContactSlack) +
+          geometry::disk_polygon_circumradius(m.radius + plan_radius() + geometry::kContactSlack) +
           p_.backoff_margin;
       const double d = (m.center - pose.x).norm();
       if (d >= need) {
@@ -396,12 +407,12 @@ Executive::Advance Executive::advance(Activity& a, const Pose& pose, double t, d
 }
 
 Executive::Advance Executive::navigate(Activity& a, const Pose& pose, double t, double dt) {
-  Advance out;
-  const double r = p_.robot_radius;
+  const double r = plan_radius();
   const std::optional<std::string> carried = map_.carried();
   const double rho = carried ? object_radius(*carried) : 0;
   const double radius = carried ? r + rho + p_.grasp.pair_margin : r;
   const Point center = carried ? reactive::pair_center(pose.x, pose.psi, rho) : pose.x;
+  if (a.backing) return back_out(a, pose, t, dt);
 
   // A grasp approach point chosen earlier may have lost its clearance to a newly seen unknown
   // fragment (the topology knowledge is unchanged then).
@@ -410,87 +421,309 @@ Executive::Advance Executive::navigate(Activity& a, const Pose& pose, double t, 
     a.planned = false;
   }
   if (!a.planned || knowledge_changed(a)) {
-    Advance p = plan(a, pose);
+    Advance p;
+    try {
+      p = plan(a, pose);
+    } catch (const topology::CenterNotFree& e) {
+      return start_back_out(a, pose, e.what(), t, dt);
+    }
     if (p.kind != Advance::kCommand) return p;
   }
-  const Point target = *a.target;
-  if (!a.built || a.built_version != map_.version() || a.built_target != target ||
+  if (!a.built || a.built_version != map_.version() || a.built_target != *a.target ||
       a.built_radius != radius) {
-    reactive::RebuildResult rr;
-    {
-      const ScopedStopwatch sw(times_.rebuild_s);
-      rr = controller_.try_rebuild(semantic_input(), radius, center, target);
-    }
-    if (rr.status == reactive::RebuildStatus::kCenterNotFree) {
-      out.kind = Advance::kStuck;
-      out.reason = rr.message;
-      return out;
-    }
-    if (rr.status == reactive::RebuildStatus::kGoalNotFree) {
-      if (a.kind == Kind::kDisassemble) {
-        out.kind = Advance::kStuck;
-        out.reason =
-            "the disassembly target " + point_text(target) + " is not reachable: " + rr.message;
-      } else {
-        out.kind = Advance::kInfeasible;
-        out.reason = "x* = " + point_text(target) +
-                     " is inside or behind obstacles the topology check does not model "
-                     "(visible unknown obstacles): " +
-                     rr.message;
-      }
-      return out;
-    }
-    if (a.built && (a.built_target - target).norm() > p_.progress.progress_step) {
-      a.monitor.reset(t);
-    }
-    a.built = true;
-    a.built_version = map_.version();
-    a.built_target = target;
-    a.built_radius = radius;
+    Advance b = rebuild(a, radius, center, t);
+    if (b.kind == Advance::kRestart && !a.built) return start_back_out(a, pose, b.reason, t, dt);
+    if (b.kind != Advance::kCommand) return b;
   }
+  // The guide's waypoints (robust variant): passed ones are dropped, the next is the law's goal.
+  while (!a.guide.empty() && (center - a.guide.front()).norm() <= p_.guide.reach) {
+    a.guide.erase(a.guide.begin());
+    a.monitor.reset(t);
+  }
+  const Point nav = a.guide.empty() ? a.goal : a.guide.front();
+  if (controller_.goal() != nav && !controller_.retarget(nav)) {
+    a.guide.clear();
+    controller_.retarget(a.goal);
+  }
+  if (std::optional<Advance> done = arrive(a, center, rho, t)) return *done;
+  if (auto stuck =
+          a.monitor.observe(t, pose, (center - controller_.goal()).norm(), map_.version())) {
+    return recover(a, center, *stuck, t);
+  }
+  return command(a, pose, rho, t, dt);
+}
 
+// The diffeomorphism for the current map, radius and x* (reactive controller of [7]); a guide
+// in use is planned again in the new mapped space. kRestart with a.built false: the centre is
+// not in the freespace (the caller backs out).
+Executive::Advance Executive::rebuild(Activity& a, double radius, const Point& center, double t) {
+  Advance out;
+  const Point target = *a.target;
+  controller_.set_convexify_all(a.convex_all);
+  reactive::RebuildResult rr;
+  {
+    const ScopedStopwatch sw(times_.rebuild_s);
+    rr = controller_.try_rebuild(semantic_input(), radius, center, target);
+  }
+  if (rr.status == reactive::RebuildStatus::kCenterNotFree) {
+    a.built = false;
+    out.kind = p_.robust.back_out ? Advance::kRestart : Advance::kStuck;
+    out.reason = rr.message;
+    return out;
+  }
+  if (rr.status == reactive::RebuildStatus::kGoalNotFree) {
+    if (a.kind == Kind::kDisassemble && p_.robust.drop && a.retargets < kMaxDropRetargets) {
+      // A newly seen unknown fragment took the drop point (the topology knowledge, which
+      // re-plans, is unchanged): choose another.
+      ++a.retargets;
+      a.rejected_drops.push_back(target);
+      a.planned = false;
+      a.target.reset();
+      out.kind = Advance::kRestart;
+      out.reason = rr.message;
+      a.built = true;  // not a centre failure
+    } else if (a.kind == Kind::kDisassemble) {
+      out.kind = Advance::kStuck;
+      out.reason =
+          "the disassembly target " + point_text(target) + " is not reachable: " + rr.message;
+    } else {
+      out.kind = Advance::kInfeasible;
+      out.reason = "x* = " + point_text(target) +
+                   " is inside or behind obstacles the topology check does not model "
+                   "(visible unknown obstacles): " +
+                   rr.message;
+    }
+    return out;
+  }
+  if (a.built && (a.built_target - target).norm() > p_.progress.progress_step) {
+    a.monitor.reset(t);
+  }
+  a.built = true;
+  a.built_version = map_.version();
+  a.built_target = target;
+  a.built_radius = radius;
+  a.goal = controller_.goal();
+  if (!a.guide.empty()) {
+    const auto path = guide_path(controller_.mapped().freespace, center, a.goal, p_.guide);
+    a.guide = path ? std::vector<Point>(path->begin(), path->end() - 1) : std::vector<Point>{};
+  }
+  return out;
+}
+
+// Reached x* (MOVE: done; GRASP: align; RELEASE, DISASSEMBLE: stop and open), or the early stop
+// of DISASSEMBLE (paper §V-B); nullopt while still on the way.
+std::optional<Executive::Advance> Executive::arrive(Activity& a, const Point& center, double rho,
+                                                    double t) {
+  Advance out;
   const double tol = a.kind == Kind::kGrasp ? p_.grasp_goal_tolerance : p_.goal_tolerance;
-  const double dist = (center - controller_.goal()).norm();
-  bool reached = dist <= tol;
-  std::string why = "reached x* = " + point_text(controller_.goal());
-  if (!reached && a.kind == Kind::kDisassemble &&
-      disassembly_done(center, r + rho, r, map_, *carried, regions_)) {
+  bool reached = a.guide.empty() && (center - a.goal).norm() <= tol;
+  std::string why = "reached x* = " + point_text(a.goal);
+  auto early = [&] {
+    return p_.robust.drop ? drop_clear(center, rho)
+                          : disassembly_done(center, p_.robot_radius + rho, p_.robot_radius, map_,
+                                             *map_.carried(), regions_);
+  };
+  if (!reached && a.kind == Kind::kDisassemble && map_.carried() && early()) {
     reached = true;
     why = "early stop at " + point_text(center) + " (clear of regions and of every obstacle)";
   }
-  if (reached) {
-    switch (a.kind) {
-      case Kind::kMove:
-        out.kind = Advance::kDone;
-        out.reason = why;
-        return out;
-      case Kind::kGrasp:
-        a.phase = Phase::kAlign;
-        a.phase_start = t;
-        out.kind = Advance::kRestart;
-        return out;
-      case Kind::kRelease:
-      case Kind::kDisassemble:
-        a.note = why;
-        a.phase = Phase::kOpen;
-        a.phase_start = t;
-        a.open_sent = false;
-        return out;  // stop for one tick, then open (Phase::kOpen)
-    }
+  if (!reached) return std::nullopt;
+  switch (a.kind) {
+    case Kind::kMove:
+      out.kind = Advance::kDone;
+      out.reason = why;
+      return out;
+    case Kind::kGrasp:
+      a.phase = Phase::kAlign;
+      a.phase_start = t;
+      out.kind = Advance::kRestart;
+      return out;
+    case Kind::kRelease:
+    case Kind::kDisassemble:
+      a.note = why;
+      a.phase = Phase::kOpen;
+      a.phase_start = t;
+      a.open_sent = false;
+      return out;  // stop for one tick, then open (Phase::kOpen)
   }
-  if (auto stuck = a.monitor.observe(t, pose, dist, map_.version())) {
-    out.kind = Advance::kStuck;
-    out.reason = *stuck;
+  return out;
+}
+
+// The progress monitor fired (a rest point, saddle or limit cycle of [7]): in the robust
+// variant the law's goal becomes the next waypoint of a path in the known freespace F_k.
+Executive::Advance Executive::recover(Activity& a, const Point& center, const std::string& why,
+                                      double t) {
+  Advance out;
+  out.kind = Advance::kStuck;
+  out.reason = why;
+  if (!p_.robust.guide) return out;
+  if (a.guides >= p_.guide.max_recoveries) {
+    out.reason += " (after " + std::to_string(a.guides) + " guide paths)";
     return out;
   }
-  out.u = carried ? controller_.pair(pose, rho, dt) : controller_.unicycle(pose, dt);
+  const auto path = guide_path(controller_.mapped().freespace, center, a.goal, p_.guide);
+  if (!path || path->size() < 2) {
+    out.reason +=
+        path ? " (x* is in sight: no guide helps)" : " (no guide path in the known freespace)";
+    return out;
+  }
+  a.guide.assign(path->begin(), path->end() - 1);
+  ++a.guides;
+  ++recoveries_.guides;
+  a.monitor.reset(t);
+  out.kind = Advance::kRestart;
   return out;
+}
+
+// The reactive law's command; a singular Dh switches the action to convex pieces (robust
+// variant) and rebuilds on the next transition.
+Executive::Advance Executive::command(Activity& a, const Pose& pose, double rho, double t,
+                                      double dt) {
+  Advance out;
+  try {
+    out.u = map_.carried() ? controller_.pair(pose, rho, dt) : controller_.unicycle(pose, dt);
+  } catch (const reactive::OutsideModelFreespace& e) {
+    // The centre touches a dilation (pressed into a corner): back up, then plan again.
+    if (!p_.robust.back_out) throw;
+    return start_back_out(a, pose, e.what(), t, dt);
+  } catch (const reactive::SingularJacobian& e) {
+    if (!p_.robust.convex_fallback || a.convex_all) throw;
+    a.convex_all = true;
+    a.built = false;
+    ++recoveries_.singular;
+    out.kind = Advance::kRestart;
+  }
+  return out;
+}
+
+Executive::Advance Executive::start_back_out(Activity& a, const Pose& pose, const std::string& why,
+                                             double t, double dt) {
+  Advance out;
+  out.kind = Advance::kStuck;
+  out.reason = why;
+  if (!p_.robust.back_out) return out;
+  if (a.back_outs >= p_.robust.max_back_outs) {
+    out.reason += " (after " + std::to_string(a.back_outs) + " back-ups)";
+    return out;
+  }
+  ++a.back_outs;
+  ++recoveries_.back_outs;
+  a.backing = true;
+  a.backing_travel = 0;
+  a.backing_dir = -1;
+  return back_out(a, pose, t, dt);
+}
+
+// Back-up of the robust variant: straight back, straight ahead, or (carrying) a turn in place
+// either way: the first move whose next step keeps the robot, and the object it carries, clear
+// of everything known and takes the centre (robot, or pair) farther from it, else the first that
+// keeps them clear; kept while it stays clear, until the centre has moved back_out_step; then
+// the action plans again from where it stopped.
+Executive::Advance Executive::back_out(Activity& a, const Pose& pose, double t, double dt) {
+  Advance out;
+  const std::optional<std::string> carried = map_.carried();
+  const double rho = carried ? object_radius(*carried) : 0;
+  auto finish_backing = [&] {
+    a.backing = false;
+    a.planned = false;
+    a.built = false;
+    a.monitor.reset(t);
+    out.kind = Advance::kRestart;
+    return out;
+  };
+  if (a.backing_travel >= p_.robust.back_out_step) return finish_backing();
+  const double v = std::min(p_.backoff_speed, (p_.robust.back_out_step - a.backing_travel) / dt);
+  const double w = carried ? std::min(p_.nav.omega_max, v / rho) : 0;
+  const Twist moves[] = {{-v, 0}, {v, 0}, {0, w}, {0, -w}};
+  const int count = carried ? 4 : 2;
+  auto centre = [&](const Pose& q) {
+    return carried ? reactive::pair_center(q.x, q.psi, rho) : q.x;
+  };
+  const double here = known_clearance(map_, centre(pose), carried.value_or(""));
+  auto usable = [&](int k, bool away) {
+    const Pose next = reactive::unicycle_step(pose, moves[k], dt);
+    if (known_clearance(map_, next.x) < p_.robot_radius) return false;
+    if (carried) {
+      const geometry::Disk m = *map_.object(*carried);
+      const Point offset = m.center - pose.x;  // rigid: rotate the offset with the heading
+      const double turn = next.psi - pose.psi;
+      const Point moved = next.x + Eigen::Rotation2Dd(turn) * offset;
+      if (known_clearance(map_, moved) < m.radius) return false;
+    }
+    return !away || known_clearance(map_, centre(next), carried.value_or("")) > here;
+  };
+  if (a.backing_dir < 0 || !usable(a.backing_dir, false)) {
+    a.backing_dir = -1;
+    // A move away from what the centre touches first; any clear move otherwise.
+    for (bool away : {true, false}) {
+      for (int k = 0; k < count && a.backing_dir < 0; ++k) {
+        if ((moves[k].v != 0 || moves[k].omega != 0) && usable(k, away)) a.backing_dir = k;
+      }
+    }
+  }
+  if (a.backing_dir < 0) {
+    if (a.backing_travel > 0) return finish_backing();
+    out.kind = Advance::kStuck;
+    out.reason = "no room to back up from " + point_text(pose.x);
+    return out;
+  }
+  out.u = moves[a.backing_dir];
+  a.backing_travel += (std::abs(out.u.v) + rho * std::abs(out.u.omega)) * dt;
+  return out;
+}
+
+double Executive::max_object_radius() const {
+  double m = 0;
+  for (const auto& o : map_.ground_truth().movable) m = std::max(m, o.disk.radius);
+  return m;
+}
+
+// Robust drop rule: the paper's early-stop test (clear of every region, and 2(r + max ρ) from
+// everything known), with kDropClearance (r + max ρ) instead of 2(r + max ρ), so that the
+// dropped object leaves a passage for the pair between itself and anything else.
+bool Executive::drop_clear(const Point& xc, double rho) const {
+  const std::optional<std::string> carried = map_.carried();
+  if (!carried) return false;
+  if (!disassembly_done(xc, p_.robot_radius + rho, p_.robot_radius, map_, *carried, regions_)) {
+    return false;
+  }
+  return known_clearance(map_, xc, *carried) >=
+         kDropClearance * (p_.robot_radius + max_object_radius());
+}
+
+double Executive::plan_radius() const { return p_.robot_radius + p_.robust.contact_margin; }
+
+// Robust variant: the mission is accepting, but Fix mode moved objects that LTL actions had
+// placed (the formula's "eventually release" held when they were released, the task's end state
+// has them elsewhere). Each is released into its region again as an interface-layer action, at
+// most 2 × (objects + 1) times per task.
+bool Executive::restore_next(double t) {
+  const std::size_t limit = 2 * (map_.ground_truth().movable.size() + 1);
+  while (!displaced_.empty() && restores_ < limit) {
+    const auto [object, region] = displaced_.front();
+    displaced_.erase(displaced_.begin());
+    const auto it = placed_.find(object);
+    if (it == placed_.end() || it->second != region) continue;  // placed anew since
+    const auto d = map_.object(object);
+    if (d && geometry::contains(this->region(region).polygon, d->center)) continue;
+    ++restores_;
+    ++recoveries_.restores;
+    fix_.push_back(make(Kind::kRelease, object, region, true, t));
+    return true;
+  }
+  return false;
+}
+
+RecoveryCounts Executive::recoveries() const {
+  RecoveryCounts c = recoveries_;
+  c.fallbacks = controller_.fallbacks();
+  return c;
 }
 
 Executive::Advance Executive::plan(Activity& a, const Pose& pose) {
   if (a.kind == Kind::kGrasp) return plan_grasp(a, pose);
   Advance out;
-  const double r = p_.robot_radius;
+  const double r = plan_radius();
   const std::optional<std::string> carried = map_.carried();
   const double rho = carried ? object_radius(*carried) : 0;
   const double radius = carried ? r + rho + p_.grasp.pair_margin : r;
@@ -504,9 +737,32 @@ Executive::Advance Executive::plan(Activity& a, const Pose& pose) {
 
   if (a.kind == Kind::kDisassemble) {
     // Paper §V-B: x* is the midpoint of an edge of the pair's freespace F; kept while it stays
-    // in F so the target does not jump as the map grows.
+    // in F so the target does not jump as the map grows. Robust variant: the nearest point of F
+    // where the object can be dropped clear of everything (drop_clear), when there is one.
     const topology::TopologyResult res = timed_check(radius, center, center);
     ++topology_checks_;
+    if (p_.robust.drop && (!a.target || !geometry::contains(res.freespace, *a.target) ||
+                           !drop_clear(*a.target, rho))) {
+      // Searched in the pair's mapped freespace F_k (the visible unknown fragments included, as
+      // the reactive controller will see it); F when the centre is not in F_k.
+      const double need = kDropClearance * (p_.robot_radius + max_object_radius()) - radius;
+      geometry::Region where = res.freespace;
+      try {
+        const ScopedStopwatch sw(times_.rebuild_s);
+        where = reactive::build_mapped_space(semantic_input(), radius, center).freespace;
+      } catch (const reactive::NotInFreespace&) {
+      }
+      // Points near a drop point a fragment took before are skipped: fragments are what the
+      // sensor sees now, so a point can look clear from one side and not from another.
+      const double avoid = 2 * (p_.robot_radius + max_object_radius());
+      auto accept = [&](const Point& q) {
+        for (const Point& x : a.rejected_drops) {
+          if ((q - x).norm() < avoid) return false;
+        }
+        return drop_clear(q, rho);
+      };
+      a.target = nearest_clear_point(where, center, need, accept, p_.guide);
+    }
     if (!a.target || !geometry::contains(res.freespace, *a.target)) {
       a.target = disassemble_target(res.freespace, map_, a.object, regions_, radius);
       if (!a.target) {
@@ -560,13 +816,14 @@ Executive::Advance Executive::plan_grasp(Activity& a, const Pose& pose) {
   // Exact freespaces: the robot's (every object an obstacle) and the pair's once gripped (the
   // object carried, radius r + ρ_i + pair_margin).
   // F from the topology check with x* = x (throws when the robot is not in its freespace).
-  const topology::TopologyResult here = timed_check(r, pose.x, pose.x);
+  const double rp = plan_radius();
+  const topology::TopologyResult here = timed_check(rp, pose.x, pose.x);
   const geometry::Region* f = &here.freespace;
   const Point c = map_.movable()[index].center;
   const geometry::RegionSet pair_free = [&] {
     const ScopedStopwatch sw(times_.topology_s);
     return freespace_of(topology::make_input(map_.workspace(), map_.familiar(), map_.movable(),
-                                             r + rho + p_.grasp.pair_margin, c, c, index,
+                                             rp + rho + p_.grasp.pair_margin, c, c, index,
                                              topology_cache_));
   }();
   topology_checks_ += 2;
@@ -637,6 +894,9 @@ void Executive::enter_fix(const std::vector<std::string>& blocking, double t) {
   const std::optional<std::string> carried = map_.carried();
   if (carried) exec.push_back(make(Kind::kDisassemble, *carried, "", true, t));
   for (auto it = blocking.rbegin(); it != blocking.rend(); ++it) {  // back() is B_M's top
+    if (const auto p = placed_.find(*it); p != placed_.end() && p_.robust.restore) {
+      displaced_.emplace_back(p->first, p->second);
+    }
     exec.push_back(make(Kind::kGrasp, *it, "", true, t));
     exec.push_back(make(Kind::kDisassemble, *it, "", true, t));
   }
@@ -688,6 +948,9 @@ void Executive::end_current(ActionOutcome outcome, const std::string& reason, do
     return;
   }
   if (outcome == ActionOutcome::kSucceeded) {
+    // What the LTL actions placed (robust variant: restored if Fix mode moves it).
+    if (a->kind == Kind::kRelease) placed_[a->object] = a->region;
+    if (a->kind == Kind::kGrasp) placed_.erase(a->object);
     const ScopedStopwatch sw(times_.mission_s);
     mission_.report_success();
     ++ltl_done_;

@@ -24,13 +24,20 @@
 //    out) is reported infeasible; fragments are subsets of the true obstacles, so this is sound.
 //  - Fix mode is bounded: at most max_fix_rounds entries per LTL action and a stack of at most
 //    2 × (objects + 1) actions, after which the task ends stuck with the reason.
+//  - The robust variant (RobustParams, the default; experiments/sweeps/README.md "Variants"):
+//    guide paths after the progress monitor fires, convex pieces where h cannot be built or Dh
+//    is singular, back-ups out of a dilation, a contact margin, drop points clear of everything
+//    for DISASSEMBLE, and objects Fix mode displaced released again at the end. The paper
+//    variant turns all of them off.
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "executive/guide_path.h"
 #include "executive/interface_layer.h"
 #include "executive/plant.h"
 #include "executive/progress_monitor.h"
@@ -43,12 +50,62 @@
 
 namespace rearm::executive {
 
+// The robust variant's extensions beyond the paper (experiments/sweeps/README.md, "Variants"),
+// each a switch so a sweep can ablate it; the paper variant turns them all off. None touches
+// the reactive law's safety: every motion is still the law's command through the
+// discrete-time safety filter, or a straight back-up checked against everything known.
+// The drop rule's clearance of the pair centre, in units of r + max ρ (the paper's early stop
+// uses 2): 3 leaves at least a pair diameter between the dropped object and anything else.
+inline constexpr double kDropClearance = 3;
+// Drop points chosen again per DISASSEMBLE when a newly seen fragment takes the last one.
+inline constexpr int kMaxDropRetargets = 8;
+
+struct RobustParams {
+  // When the progress monitor fires, follow waypoints of a path in the known freespace
+  // (guide_path.h) instead of ending the action stuck, up to GuideParams::max_recoveries times.
+  bool guide = true;
+  // Keep clusters the diffeomorphism cannot purge, or where Dh turns singular, as convex
+  // pieces (ReactiveController::set_convex_fallback) instead of ending the action stuck.
+  bool convex_fallback = true;
+  // When the robot's (or pair's) centre is not in its freespace (a grasp beside a wall, a
+  // push), move off by back_out_step instead of ending the action stuck: straight back, else
+  // straight ahead, else (carrying) a turn in place, whichever keeps the robot and the object
+  // clear and moves the centre away from what it touches.
+  bool back_out = true;
+  double back_out_step = 0.3;  // m per back-out
+  // m added to the robot's radius in every freespace the interface layer and the reactive
+  // controller compute (topology checks, mapped spaces), so the law's boundary keeps the robot
+  // this far from what it knows: [7] keeps the robot inside F_k but lets it slide along ∂F_k,
+  // i.e. in contact, once clusters leave it only gaps to pass. 0 in the paper variant.
+  double contact_margin = 0.01;
+  // DISASSEMBLE drops the object at the nearest point of the pair's freespace that is clear of
+  // every region and kDropClearance (r + max ρ) from everything known (guide_path.h,
+  // nearest_clear_point), and stops early only there; the paper's target (an edge midpoint of F,
+  // i.e. against an obstacle or the boundary) when no such point is reachable.
+  bool drop = true;
+  // When the mission is accepting, release again into its region every object an LTL RELEASE
+  // placed and Fix mode later moved away (the formula holds, the end state would not).
+  bool restore = true;
+  int max_back_outs = 4;  // per action
+};
+
+// How often each recovery of the robust variant fired in a run.
+struct RecoveryCounts {
+  int guides = 0;     // guide paths followed after the progress monitor fired
+  int back_outs = 0;  // straight back-ups out of a dilation
+  int singular = 0;   // actions switched to convex pieces after a singular Dh
+  int fallbacks = 0;  // rebuilds that kept clusters as convex pieces
+  int restores = 0;   // objects released into their regions again after Fix mode moved them
+};
+
 struct ExecutiveParams {
   double robot_radius = 0.2;  // r (m)
   reactive::DiffeoParams diffeo;
   reactive::NavParams nav;
   GraspParams grasp;
   ProgressParams progress;
+  RobustParams robust;
+  GuideParams guide;
   double goal_tolerance = 0.05;        // m: MOVE, RELEASE, DISASSEMBLE reach x*
   double grasp_goal_tolerance = 0.01;  // m: the robot reaches the grasp approach point
   double align_tolerance = 1e-3;       // rad: the gripper faces the object
@@ -133,6 +190,7 @@ class Executive {
   int topology_checks() const { return topology_checks_; }
   int rebuilds() const { return controller_.rebuilds(); }
   const ComputeTimes& compute_times() const { return times_; }
+  RecoveryCounts recoveries() const;
   bool in_fix_mode() const { return !fix_.empty(); }
   // "move(l1)" etc., or "" when idle.
   std::string current_action() const;
@@ -165,7 +223,19 @@ class Executive {
     bool built = false;
     Point built_target = Point::Zero();
     double built_radius = 0;
+    Point goal = Point::Zero();  // x* as the controller holds it (snapped onto F_k)
     ProgressMonitor monitor;
+    // Robust-variant state: the guide's remaining waypoints (x* excluded), recoveries used, the
+    // back-up in progress and the convex pieces forced after a singular Dh.
+    std::vector<Point> guide;
+    int guides = 0;
+    int back_outs = 0;
+    bool backing = false;
+    double backing_travel = 0;  // m moved (arc length of the centre) in this back-up
+    int backing_dir = -1;       // index into the back-up moves, -1: choose one
+    bool convex_all = false;
+    int retargets = 0;  // drop points chosen again after a fragment took one
+    std::vector<Point> rejected_drops;
     std::string name() const;
   };
 
@@ -180,10 +250,18 @@ class Executive {
   Activity* current();
   Activity make(Kind kind, std::string object, std::string region, bool fix, double t) const;
   bool fetch_ltl(double t);
+  bool restore_next(double t);
   Advance advance(Activity& a, const Pose& pose, double t, double dt);
   Advance navigate(Activity& a, const Pose& pose, double t, double dt);
   Advance plan(Activity& a, const Pose& pose);
   Advance plan_grasp(Activity& a, const Pose& pose);
+  Advance rebuild(Activity& a, double radius, const Point& center, double t);
+  Advance recover(Activity& a, const Point& center, const std::string& why, double t);
+  Advance back_out(Activity& a, const Pose& pose, double t, double dt);
+  Advance start_back_out(Activity& a, const Pose& pose, const std::string& why, double t,
+                         double dt);
+  Advance command(Activity& a, const Pose& pose, double rho, double t, double dt);
+  std::optional<Advance> arrive(Activity& a, const Point& center, double rho, double t);
   void end_current(ActionOutcome outcome, const std::string& reason, double t);
   void enter_fix(const std::vector<std::string>& blocking, double t);
   void finish(TaskStatus status, const std::string& reason, double t);
@@ -192,6 +270,10 @@ class Executive {
   // object excluded), its time added to times_.topology_s.
   topology::TopologyResult timed_check(double radius, const Point& x, const Point& target);
   const RegionOfInterest& region(const std::string& id) const;
+  // The robot radius of every planning freespace: r + RobustParams::contact_margin.
+  double plan_radius() const;
+  double max_object_radius() const;
+  bool drop_clear(const Point& xc, double rho) const;
   double object_radius(const std::string& id) const;
   bool knowledge_changed(const Activity& a) const;
 
@@ -210,6 +292,10 @@ class Executive {
   int ltl_done_ = 0;
   int topology_checks_ = 0;
   ComputeTimes times_;
+  RecoveryCounts recoveries_;
+  std::map<std::string, std::string> placed_;  // object → region of its last LTL release
+  std::vector<std::pair<std::string, std::string>> displaced_;  // moved by Fix mode since
+  std::size_t restores_ = 0;
   GripperAction gripper_ = GripperAction::kNone;
   std::string gripper_object_;
   std::vector<ActionRecord> log_;

@@ -6,6 +6,8 @@
 
 #include <cstddef>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "reactive/kinematics.h"
 
@@ -14,6 +16,8 @@ namespace rearm::executive {
 using geometry::Point;
 using reactive::Pose;
 using reactive::Twist;
+
+inline constexpr std::size_t kMaxCollisionEvents = 100;
 
 class Plant {
  public:
@@ -38,6 +42,9 @@ class Plant {
   // negative when they overlap), and the number of collisions so far.
   virtual double clearance() const = 0;
   virtual int collisions() const = 0;
+  // What touched what and when, one line per collision ("t = 12.34 s: robot touched object 2");
+  // at most kMaxCollisionEvents are kept.
+  virtual std::vector<std::string> collision_events() const { return {}; }
 };
 
 }  // namespace rearm::executive

@@ -98,7 +98,9 @@ TaskResult run_task(const TaskSpec& spec, Plant& plant, const TaskOptions& o) {
   res.reason = exec.reason();
   res.actions = exec.actions();
   res.fix_mode_entries = exec.fix_mode_entries();
+  res.recoveries = exec.recoveries();
   res.collisions = plant.collisions();
+  res.collision_events = plant.collision_events();
   res.sim_time = t;
   res.rebuilds = exec.rebuilds();
   res.topology_checks = exec.topology_checks();

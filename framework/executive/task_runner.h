@@ -40,9 +40,11 @@ struct TaskResult {
   std::string reason;
   std::vector<ActionRecord> actions;
   int fix_mode_entries = 0;
+  RecoveryCounts recoveries;  // the robust variant's recoveries (executive.h)
   int collisions = 0;
-  double min_clearance = 0;  // m, ground truth over every step
-  double sim_time = 0;       // s
+  std::vector<std::string> collision_events;  // Plant::collision_events
+  double min_clearance = 0;                   // m, ground truth over every step
+  double sim_time = 0;                        // s
   int steps = 0;
   double robot_path_length = 0;   // m
   double object_path_length = 0;  // m, summed over objects
@@ -54,10 +56,8 @@ struct TaskResult {
   double topology_time = 0;
   double rebuild_time = 0;
   double control_time = 0;
-  double compute_time() const {
-    return mission_time + topology_time + rebuild_time + control_time;
-  }
-  double wall_time = 0;           // s of wall time for the whole run
+  double compute_time() const { return mission_time + topology_time + rebuild_time + control_time; }
+  double wall_time = 0;  // s of wall time for the whole run
   int rebuilds = 0;
   int topology_checks = 0;
   std::vector<Pose> path;                        // robot poses (when recorded)

@@ -1,6 +1,9 @@
 #include "experiment/rearm_method.h"
 
+#include <algorithm>
+#include <optional>
 #include <string>
+#include <utility>
 
 #include "experiment/goals.h"
 #include "experiment/run_scenario.h"
@@ -24,14 +27,25 @@ TrialStatus status_of(executive::TaskStatus s) {
   return TrialStatus::kError;  // a run never ends running; reported, not hidden
 }
 
+// What a method forces on the scenario's controller: nothing ("rearm"), the paper variant
+// ("rearm-paper"), or the robust variant with one switch off (the ablations).
+struct Variant {
+  std::string name;
+  std::string summary;
+  std::string variant;                        // "" keeps the scenario's
+  bool scenario::Controller::*off = nullptr;  // the switch turned off, if any
+};
+
 class RearmMethod final : public Method {
  public:
-  std::string name() const override { return "rearm"; }
-  std::string summary() const override {
-    return "the paper's architecture online in Box2D (sensor discovery, Fix mode)";
-  }
+  explicit RearmMethod(Variant v) : v_(std::move(v)) {}
+  std::string name() const override { return v_.name; }
+  std::string summary() const override { return v_.summary; }
 
-  TrialOutcome run(const scenario::Scenario& s, const MethodInput& in) const override {
+  TrialOutcome run(const scenario::Scenario& scene, const MethodInput& in) const override {
+    scenario::Scenario s = scene;
+    if (!v_.variant.empty()) scenario::set_variant(s.controller, v_.variant);
+    if (v_.off != nullptr) s.controller.*v_.off = false;
     RunOptions o;
     o.seed = in.seed;
     o.record = false;
@@ -53,12 +67,40 @@ class RearmMethod final : public Method {
     out.fix_mode_entries = x.fix_mode_entries;
     out.collisions = x.collisions;
     out.min_clearance_m = x.min_clearance;
+    out.recoveries = x.recoveries;
     return out;
   }
+
+ private:
+  Variant v_;
 };
 
 }  // namespace
 
-std::unique_ptr<Method> make_rearm_method() { return std::make_unique<RearmMethod>(); }
+std::unique_ptr<Method> make_rearm_method() {
+  return std::make_unique<RearmMethod>(Variant{
+      "rearm", "the paper's architecture online in Box2D, robust variant (the scenario's switches)",
+      "", nullptr});
+}
+
+std::vector<std::unique_ptr<Method>> make_rearm_variants() {
+  std::vector<std::unique_ptr<Method>> out;
+  out.push_back(std::make_unique<RearmMethod>(
+      Variant{"rearm-paper", "rearm with the paper's choices only (no robust extension)", "paper",
+              nullptr}));
+  for (const scenario::RobustSwitch& w : scenario::kRobustSwitches) {
+    std::string key = w.key;
+    key.erase(std::remove(key.begin(), key.end(), '_'), key.end());
+    out.push_back(std::make_unique<RearmMethod>(
+        Variant{"rearm-no" + key, std::string("rearm, robust variant with ") + w.key + " off",
+                "robust", w.flag}));
+  }
+  return out;
+}
+
+void register_rearm_methods(MethodRegistry& r) {
+  r.add(make_rearm_method());
+  for (auto& m : make_rearm_variants()) r.add(std::move(m));
+}
 
 }  // namespace rearm::experiment

@@ -6,12 +6,22 @@
 #pragma once
 
 #include <memory>
+#include <vector>
 
 #include "experiment/method.h"
 
 namespace rearm::experiment {
 
-// The method "rearm".
+// The method "rearm": the robust variant with every extension (executive::RobustParams).
 std::unique_ptr<Method> make_rearm_method();
+
+// rearm with the scenario's controller variant overridden, for ablations
+// (experiments/sweeps/README.md, "Variants"): "rearm-paper" (the paper's choices, no
+// extension), "rearm-noguide", "rearm-noconvexfallback", "rearm-nobackout", "rearm-norestore",
+// "rearm-nodrop" (one extension off).
+std::vector<std::unique_ptr<Method>> make_rearm_variants();
+
+// Registers "rearm" and its variants.
+void register_rearm_methods(MethodRegistry& r);
 
 }  // namespace rearm::experiment

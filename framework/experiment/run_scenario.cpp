@@ -80,6 +80,9 @@ std::string metrics_json(const scenario::Scenario& s, const RunRecord& r) {
   j.key("status").value(executive::to_string(t.status));
   j.key("reason").value(t.reason);
   j.key("collisions").value(t.collisions);
+  j.key("collision_events").begin_array();
+  for (const std::string& e : t.collision_events) j.value(e);
+  j.end_array();
   j.key("min_clearance").value(t.min_clearance);
   j.key("sim_time_s").value(t.sim_time);
   j.key("steps").value(t.steps);
@@ -88,6 +91,13 @@ std::string metrics_json(const scenario::Scenario& s, const RunRecord& r) {
   j.key("controller_time_s").value(t.controller_time);
   j.key("real_time_factor").value(r.real_time_factor());
   j.key("fix_mode_entries").value(t.fix_mode_entries);
+  j.key("recoveries").begin_object();
+  j.key("guides").value(t.recoveries.guides);
+  j.key("back_outs").value(t.recoveries.back_outs);
+  j.key("singular_switches").value(t.recoveries.singular);
+  j.key("convex_fallbacks").value(t.recoveries.fallbacks);
+  j.key("restores").value(t.recoveries.restores);
+  j.end_object();
   j.key("robot_path_length_m").value(t.robot_path_length);
   j.key("object_path_length_m").value(t.object_path_length);
   j.key("rebuilds").value(t.rebuilds);

@@ -22,6 +22,7 @@ class SimPlant final : public executive::Plant {
   void step(const executive::Twist& u, double dt) override;
   double clearance() const override { return world_.clearance(); }
   int collisions() const override { return world_.collisions(); }
+  std::vector<std::string> collision_events() const override { return world_.collision_events(); }
 
   const sim::SimWorld& world() const { return world_; }
 

@@ -52,6 +52,12 @@ executive::TaskSpec task_spec(const scenario::Scenario& s) {
   e.nav.omega_max = s.robot.omega_max;
   e.nav.sensing_range = s.robot.sensor_range;
   e.goal_tolerance = s.controller.goal_tolerance;
+  e.robust.guide = s.controller.guide;
+  e.robust.convex_fallback = s.controller.convex_fallback;
+  e.robust.back_out = s.controller.back_out;
+  e.robust.restore = s.controller.restore;
+  e.robust.drop = s.controller.drop;
+  if (s.controller.variant == "paper") e.robust.contact_margin = 0;
   e.max_ltl_actions = s.simulation.max_actions;
   return t;
 }

@@ -7,6 +7,7 @@
 #include <string>
 #include <string_view>
 
+#include "executive/executive.h"
 #include "scenario/random_instance.h"
 
 namespace rearm::experiment {
@@ -66,6 +67,7 @@ struct TrialOutcome {
   int actions = 0;           // rearm: executed actions, Fix mode's included; baselines: 2 per move
   int fix_mode_entries = 0;
   int replans = 0;
+  executive::RecoveryCounts recoveries;  // rearm's robust variant (0 for the baselines)
   int collisions = 0;
   double min_clearance_m = 0;
   long queries = 0;     // motion queries, straight-line checks included (baselines)

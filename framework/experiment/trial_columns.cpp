@@ -80,6 +80,11 @@ void outcome_fields(const TrialRecord& r, std::vector<std::string>& f) {
   f.push_back(integer(o.actions));
   f.push_back(integer(o.fix_mode_entries));
   f.push_back(integer(o.replans));
+  f.push_back(integer(o.recoveries.guides));
+  f.push_back(integer(o.recoveries.back_outs));
+  f.push_back(integer(o.recoveries.singular));
+  f.push_back(integer(o.recoveries.fallbacks));
+  f.push_back(integer(o.recoveries.restores));
   f.push_back(integer(o.collisions));
   f.push_back(exact(o.min_clearance_m));
   f.push_back(integer(o.queries));
@@ -129,6 +134,11 @@ const std::vector<std::string>& trial_columns() {
                                                    "actions",
                                                    "fix_mode_entries",
                                                    "replans",
+                                                   "guides",
+                                                   "back_outs",
+                                                   "singular_switches",
+                                                   "convex_fallbacks",
+                                                   "restores",
                                                    "collisions",
                                                    "min_clearance_m",
                                                    "queries",

@@ -41,7 +41,8 @@ HalfPlane bisector(const Point& y, const Point& p, double d) {
 }
 
 [[noreturn]] void not_free(const std::string& what) {
-  throw Error("local_freespace: the point y is not in the model freespace (" + what + ")");
+  throw OutsideModelFreespace("local_freespace: the point y is not in the model freespace (" +
+                              what + ")");
 }
 
 }  // namespace

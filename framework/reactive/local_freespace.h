@@ -8,11 +8,22 @@
 // disk, so every guarantee of the exact cell still holds).
 #pragma once
 
+#include <string>
+
+#include "core/error.h"
 #include "geometry/convex.h"
 #include "geometry/polygon.h"
 #include "reactive/model_space.h"
 
 namespace rearm::reactive {
+
+// Thrown when y is not strictly inside the model freespace: the robot touches an obstacle's
+// dilation (an outcome the interface layer answers by backing up, executive.h), unlike
+// malformed input.
+class OutsideModelFreespace : public Error {
+ public:
+  explicit OutsideModelFreespace(const std::string& what) : Error(what) {}
+};
 
 // Sides of the regular polygon inscribed in B(y, R/2). At 32 sides it keeps cos(π/32) ≈ 99.5%
 // of the radius.

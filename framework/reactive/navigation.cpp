@@ -30,7 +30,7 @@ void check_inputs(const DiffeoEval& at, const Point& y_goal, const char* what) {
 
 void check_regular(const Eigen::Matrix2d& J, const NavParams& p, const char* what) {
   if (!(std::abs(J.determinant()) > p.singular_tolerance * J.squaredNorm())) {
-    throw Error(std::string(what) + ": Dh is singular at this point (a sharp corner?)");
+    throw SingularJacobian(std::string(what) + ": Dh is singular at this point (a sharp corner?)");
   }
 }
 

@@ -8,6 +8,9 @@
 // unicycle heading).
 #pragma once
 
+#include <string>
+
+#include "core/error.h"
 #include "geometry/polygon.h"
 #include "reactive/diffeomorphism.h"
 #include "reactive/kinematics.h"
@@ -29,6 +32,14 @@ struct NavParams {
   // Dh counts as singular when |det Dh| <= singular_tolerance · ‖Dh‖_F² (scale-free; h is a
   // diffeomorphism away from sharp corners, so this only fires at or next to a corner).
   double singular_tolerance = 1e-9;
+};
+
+// Thrown by the laws when Dh is singular at the evaluation point (next to a sharp corner of a
+// purged cluster): an expected outcome the interface layer can answer (the convex fallback of
+// reactive_controller.h), unlike malformed input.
+class SingularJacobian : public Error {
+ public:
+  explicit SingularJacobian(const std::string& what) : Error(what) {}
 };
 
 // Throws rearm::Error naming the first invalid field (non-finite, non-positive gains or

@@ -6,6 +6,7 @@
 
 #include "core/error.h"
 #include "geometry/distance.h"
+#include "geometry/partition.h"
 
 namespace rearm::reactive {
 namespace {
@@ -30,6 +31,22 @@ std::optional<Point> snap_goal(const MappedSpace& m, const Point& goal) {
     if (in_freespace(m, q)) return q;
   }
   return std::nullopt;
+}
+
+// Replaces the familiar components for which `pick` holds by their convex pieces, kept as
+// convex obstacles of the model space (the unknown fragments' treatment).
+template <typename Pick>
+void convexify(MappedSpace& m, Pick pick) {
+  std::vector<FamiliarComponent> kept;
+  for (FamiliarComponent& c : m.familiar) {
+    if (!pick(c)) {
+      kept.push_back(std::move(c));
+      continue;
+    }
+    for (Polygon& piece : geometry::convex_partition(c.polygon))
+      m.unknown.push_back(std::move(piece));
+  }
+  m.familiar = std::move(kept);
 }
 
 }  // namespace
@@ -66,13 +83,37 @@ RebuildResult ReactiveController::try_rebuild(const SemanticInput& map, double r
                 ") is not in the freespace component of the robot (inside an obstacle, or "
                 "disconnected from the robot)"};
   }
-  auto diffeo = std::make_unique<Diffeomorphism>(Diffeomorphism::build(mapped, diffeo_params_));
+  std::unique_ptr<Diffeomorphism> diffeo;
+  if (fallback_ && convexify_all_) convexify(mapped, [](const FamiliarComponent&) { return true; });
+  try {
+    diffeo = std::make_unique<Diffeomorphism>(Diffeomorphism::build(mapped, diffeo_params_));
+  } catch (const Error&) {
+    if (!fallback_) throw;
+    ++fallbacks_;
+    convexify(mapped, [](const FamiliarComponent& c) { return c.curved; });
+    try {
+      diffeo = std::make_unique<Diffeomorphism>(Diffeomorphism::build(mapped, diffeo_params_));
+    } catch (const Error&) {
+      convexify(mapped, [](const FamiliarComponent&) { return true; });
+      diffeo = std::make_unique<Diffeomorphism>(Diffeomorphism::build(mapped, diffeo_params_));
+    }
+  }
+  if (fallback_ && convexify_all_) ++fallbacks_;
   model_goal_ = diffeo->map(target);
   mapped_ = std::move(mapped);
   diffeo_ = std::move(diffeo);
   goal_ = target;
   ++rebuilds_;
   return {};
+}
+
+bool ReactiveController::retarget(const Point& goal) {
+  if (!diffeo_) throw Error("reactive controller: retarget requested before rebuild()");
+  if (!goal.allFinite()) throw Error("reactive controller: goal is not finite");
+  if (!in_freespace(mapped_, goal)) return false;
+  goal_ = goal;
+  model_goal_ = diffeo_->map(goal);
+  return true;
 }
 
 Point ReactiveController::holonomic(const Point& x, double dt) {

@@ -50,6 +50,24 @@ class ReactiveController {
   RebuildResult try_rebuild(const SemanticInput& map, double radius, const Point& center,
                             const Point& goal);
 
+  // Moves the goal within the current mapped space (no rebuild: h does not depend on the goal).
+  // Returns false, leaving the goal as it was, when `goal` is not in the freespace F_k.
+  bool retarget(const Point& goal);
+
+  // Convex fallback of the robust variant (experiments/sweeps/README.md, "Variants"): when
+  // Diffeomorphism::build rejects a cluster (no purging tree, a collar that cannot avoid another
+  // obstacle), the clusters of mixed kind (FamiliarComponent::curved), then every familiar
+  // component, are kept in the model space as their convex pieces (h is the identity there).
+  // The law of Arslan & Koditschek stays safe with convex obstacles that overlap (LF(y) excludes
+  // each one); what is lost near them is the convergence guarantee, which the interface layer's
+  // guide recovers (executive/guide_path.h). Off (the paper's choice): the build error is thrown.
+  void set_convex_fallback(bool on) { fallback_ = on; }
+  // Every familiar component kept as its convex pieces from the next rebuild on (the executive
+  // sets it for an action where Dh turned singular).
+  void set_convexify_all(bool on) { convexify_all_ = on; }
+  // Rebuilds that used the convex fallback.
+  int fallbacks() const { return fallbacks_; }
+
   bool ready() const { return diffeo_ != nullptr; }
   // Commands at the current state (docs/reactive.md §4), to be held for one step of `dt`.
   // Discrete-time safety: the law keeps the model point inside the local freespace LF(y) in
@@ -81,6 +99,9 @@ class ReactiveController {
   Point model_goal_ = Point::Zero();
   NavScratch scratch_;
   int rebuilds_ = 0;
+  bool fallback_ = false;
+  bool convexify_all_ = false;
+  int fallbacks_ = 0;
 };
 
 }  // namespace rearm::reactive

@@ -46,13 +46,40 @@ struct Controller {
   double mu2 = 0.05;
   double k_v = 1.0;  // unicycle gains
   double k_omega = 1.0;
-  double goal_tolerance = 0.05;      // m
+  double goal_tolerance = 0.05;  // m
   // m: a visible unknown fragment changes the map (and the diffeomorphism is rebuilt) only when
   // a vertex moved by more than this. Fragments change where the sensor disk cuts an obstacle,
   // i.e. about R away from the robot, so a stale fragment only misses parts at least R - 0.1 m
   // away; 0.1 m halves the rebuilds of 0.05 m (fig5: 369 instead of 720).
   double fragment_tolerance = 0.1;
+  // The interface layer's behaviour where [7]'s separation assumptions break
+  // (experiments/sweeps/README.md, "Variants"): "robust" (the default) runs the extensions of
+  // executive::RobustParams, each switchable below; "paper" runs none (the paper's choices).
+  std::string variant = "robust";
+  bool guide = true;            // robust only: guide paths after the progress monitor fires
+  bool convex_fallback = true;  // robust only: convex pieces where h cannot be built
+  bool back_out = true;         // robust only: back up when the centre is not free
+  bool restore = true;          // robust only: re-place objects Fix mode moved off their goal
+  bool drop = true;             // robust only: drop disassembled objects clear of everything
 };
+
+// The robust variant's switches by key (scenario files; the ablation methods "rearm-no<key>").
+struct RobustSwitch {
+  const char* key;
+  bool Controller::*flag;
+};
+inline constexpr RobustSwitch kRobustSwitches[] = {
+    {"guide", &Controller::guide},
+    {"convex_fallback", &Controller::convex_fallback},
+    {"back_out", &Controller::back_out},
+    {"restore", &Controller::restore},
+    {"drop", &Controller::drop}};
+
+// Sets the variant ("robust" or "paper") and every switch: all on, or all off.
+inline void set_variant(Controller& c, const std::string& variant) {
+  c.variant = variant;
+  for (const RobustSwitch& s : kRobustSwitches) c.*s.flag = variant == "robust";
+}
 
 struct Simulation {
   double dt = 0.01;           // fixed step (s)

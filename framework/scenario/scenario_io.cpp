@@ -76,7 +76,8 @@ std::vector<Object> read_objects(Reader& r, const YAML::Node& n) {
 void read_controller(Reader& r, const YAML::Node& n, Controller& c) {
   const Fields f(
       r, n, "controller",
-      {"p", "epsilon", "mu1", "mu2", "k_v", "k_omega", "goal_tolerance", "fragment_tolerance"});
+      {"p", "epsilon", "mu1", "mu2", "k_v", "k_omega", "goal_tolerance", "fragment_tolerance",
+       "variant", "guide", "convex_fallback", "back_out", "restore", "drop"});
   struct Field {
     const char* key;
     double* value;
@@ -91,6 +92,21 @@ void read_controller(Reader& r, const YAML::Node& n, Controller& c) {
                           {"fragment_tolerance", &c.fragment_tolerance}};
   for (const auto& [key, value] : fields) {
     if (auto v = f.find(key)) *value = r.number(*v, f.child(key));
+  }
+  if (auto v = f.find("variant")) {
+    c.variant = r.text(*v, f.child("variant"));
+    if (c.variant != "robust" && c.variant != "paper") {
+      r.fail(f.child("variant"), "expected robust or paper, got '" + c.variant + "'");
+    }
+  }
+  set_variant(c, c.variant);
+  for (const RobustSwitch& s : kRobustSwitches) {
+    if (auto v = f.find(s.key)) {
+      c.*s.flag = r.flag(*v, f.child(s.key));
+      if (c.variant == "paper" && c.*s.flag) {
+        r.fail(f.child(s.key), "the paper variant runs no extension (use variant: robust)");
+      }
+    }
   }
 }
 
@@ -239,7 +255,13 @@ std::string to_yaml(const Scenario& s) {
   out << "controller: {p: " << c.p << ", epsilon: " << num(c.epsilon) << ", mu1: " << num(c.mu1)
       << ", mu2: " << num(c.mu2) << ", k_v: " << num(c.k_v) << ", k_omega: " << num(c.k_omega)
       << ", goal_tolerance: " << num(c.goal_tolerance)
-      << ", fragment_tolerance: " << num(c.fragment_tolerance) << "}\n";
+      << ", fragment_tolerance: " << num(c.fragment_tolerance) << ", variant: " << c.variant;
+  if (c.variant == "robust") {
+    for (const RobustSwitch& w : kRobustSwitches) {
+      out << ", " << w.key << ": " << (c.*w.flag ? "true" : "false");
+    }
+  }
+  out << "}\n";
   const Simulation& m = s.simulation;
   out << "simulation: {dt: " << num(m.dt) << ", time_budget: " << num(m.time_budget)
       << ", velocity_iterations: " << m.velocity_iterations

@@ -149,6 +149,15 @@ class Reader {
     return n.Scalar();
   }
 
+  // true or false (YAML's other spellings, yes/no/on/off, are refused: one way to say it).
+  bool flag(const YAML::Node& n, const std::string& path) const {
+    if (n.IsScalar() && n.Tag() != "!" && (n.Scalar() == "true" || n.Scalar() == "false")) {
+      return n.Scalar() == "true";
+    }
+    fail(path, "expected true or false, got " + describe(n));
+    return false;
+  }
+
   geometry::Point point(const YAML::Node& n, const std::string& path) {
     if (!n.IsSequence() || n.size() != 2) {
       fail(path, "expected a point [x, y], got " + describe(n));

@@ -31,6 +31,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <limits>
 #include <numbers>
 #include <sstream>
@@ -217,6 +218,8 @@ struct SimWorld::Impl : public b2ContactListener {
 
   long long steps = 0;
   int collisions = 0;
+  static constexpr std::size_t kMaxEvents = 100;
+  std::vector<std::string> events;
   double clearance = 0;
   double min_clearance = 0;
 
@@ -236,6 +239,27 @@ struct SimWorld::Impl : public b2ContactListener {
     if (touching_other_than(robot, other, contact)) return;
     if (held && touching_other_than(object_bodies[*held], other, contact)) return;
     ++collisions;
+    if (events.size() < kMaxEvents) {
+      char t[32];
+      std::snprintf(t, sizeof t, "t = %.2f s: ", double(steps) * config.dt);
+      events.push_back(t + describe(mover) + " touched " + describe(other));
+    }
+  }
+
+  static std::string describe(std::uintptr_t t) {
+    switch (kind_of(t)) {
+      case Kind::kBoundary:
+        return "the workspace boundary";
+      case Kind::kFamiliar:
+        return "familiar obstacle " + std::to_string(index_of(t));
+      case Kind::kUnknown:
+        return "unknown obstacle " + std::to_string(index_of(t));
+      case Kind::kObject:
+        return "object " + std::to_string(index_of(t));
+      case Kind::kRobot:
+        return "the robot";
+    }
+    return "?";
   }
 
   // The robot, or the object it holds.
@@ -576,6 +600,8 @@ void SimWorld::step(double v, double omega) {
 double SimWorld::time() const { return static_cast<double>(impl_->steps) * impl_->config.dt; }
 
 int SimWorld::collisions() const { return impl_->collisions; }
+
+std::vector<std::string> SimWorld::collision_events() const { return impl_->events; }
 
 double SimWorld::clearance() const { return impl_->clearance; }
 

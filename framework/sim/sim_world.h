@@ -67,6 +67,9 @@ class SimWorld {
   // object and anything else but each other), and the smallest ground-truth clearance seen
   // (exact geometry, as the kinematic plant measures it: negative when overlapping).
   int collisions() const;
+  // One line per collision, "t = 12.34 s: robot touched object 2" (boundary, familiar k,
+  // unknown k, object k; "held object k" for the carried one), the first 100 kept.
+  std::vector<std::string> collision_events() const;
   double clearance() const;      // now
   double min_clearance() const;  // over every step so far
 

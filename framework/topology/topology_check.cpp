@@ -380,8 +380,9 @@ TopologyResult check_topology(const TopologyInput& raw, TopologyCache& cache) {
     if (geometry::contains(out.components[i], in.x)) root = i;
   }
   if (root == out.components.size()) {
-    throw Error("topology: x = " + format(in.x) +
-                " is not in the freespace (inside an obstacle's dilation or outside the bound)");
+    throw CenterNotFree(
+        "topology: x = " + format(in.x) +
+        " is not in the freespace (inside an obstacle's dilation or outside the bound)");
   }
   out.freespace = out.components[root];
   out.enclosing = geometry::convex_hull(out.freespace.outer.vertices);

@@ -56,6 +56,7 @@
 #include <string>
 #include <vector>
 
+#include "core/error.h"
 #include "geometry/convex.h"
 #include "geometry/dilation.h"
 #include "geometry/polygon.h"
@@ -107,6 +108,14 @@ struct TopologyResult {
   // first. Empty unless verdict == kBlockedByObjects.
   std::vector<std::size_t> blocking;
   std::string reason;  // why: the target's component, the blocking objects, the separation
+};
+
+// Thrown by check_topology when x is not in the freespace (inside an obstacle's dilation or
+// outside the bound): an outcome the interface layer answers (it backs the robot out), unlike
+// malformed input.
+class CenterNotFree : public Error {
+ public:
+  explicit CenterNotFree(const std::string& what) : Error(what) {}
 };
 
 // Appendix III. Throws rearm::Error for bad input: a non-finite x or x*, an invalid polygon

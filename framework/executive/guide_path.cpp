@@ -1,0 +1,312 @@
+#include "executive/guide_path.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <queue>
+#include <string>
+
+#include "core/error.h"
+#include "geometry/distance.h"
+
+namespace rearm::executive {
+namespace {
+
+using geometry::Point;
+using geometry::Polygon;
+using geometry::Region;
+
+constexpr float kInf = std::numeric_limits<float>::infinity();
+constexpr double kFar = 1e20;  // "no blocked cell" in the distance transform (finite)
+// Cells searched around an endpoint whose own cell centre is outside F_k.
+constexpr int kEndpointSearchCells = 6;
+
+struct Raster {
+  double x0 = 0, y0 = 0, res = 0;
+  int nx = 0, ny = 0;
+  std::vector<unsigned char> free;  // cell centre in F_k
+  std::vector<float> clear;         // m, from the distance transform
+  Point center(int i, int j) const { return {x0 + (i + 0.5) * res, y0 + (j + 0.5) * res}; }
+  int index(int i, int j) const { return j * nx + i; }
+};
+
+template <typename F>
+void for_each_edge(const Region& r, F&& f) {
+  auto ring = [&](const Polygon& p) {
+    for (std::size_t k = 0; k < p.size(); ++k) f(p.vertices[k], p.vertices[(k + 1) % p.size()]);
+  };
+  ring(r.outer);
+  for (const Polygon& h : r.holes) ring(h);
+}
+
+// Scanline fill: a cell is free when its centre lies inside an odd number of rings (the holes
+// lie inside the outer ring and are disjoint, so even-odd is F_k's membership).
+void fill(const Region& r, Raster& g) {
+  std::vector<double> xs;
+  for (int j = 0; j < g.ny; ++j) {
+    const double y = g.y0 + (j + 0.5) * g.res;
+    xs.clear();
+    for_each_edge(r, [&](const Point& a, const Point& b) {
+      if ((a.y() > y) != (b.y() > y))
+        xs.push_back(a.x() + (y - a.y()) * (b.x() - a.x()) / (b.y() - a.y()));
+    });
+    std::sort(xs.begin(), xs.end());
+    for (std::size_t k = 0; k + 1 < xs.size(); k += 2) {
+      const int lo = std::max(0, static_cast<int>(std::ceil((xs[k] - g.x0) / g.res - 0.5)));
+      const int hi =
+          std::min(g.nx - 1, static_cast<int>(std::floor((xs[k + 1] - g.x0) / g.res - 0.5)));
+      for (int i = lo; i <= hi; ++i) g.free[g.index(i, j)] = 1;
+    }
+  }
+}
+
+// One-dimensional squared Euclidean distance transform (Felzenszwalb & Huttenlocher, 2012) of
+// f into d: d[q] = min_p (q − p)² + f[p] (z[0] = −∞ in the original: a value below every
+// intersection).
+
+void edt_1d(const std::vector<double>& f, std::vector<double>& d, std::vector<int>& v,
+            std::vector<double>& z) {
+  const int n = static_cast<int>(f.size());
+  auto meet = [&](int q, int p) {
+    return ((f[q] + double(q) * q) - (f[p] + double(p) * p)) / (2.0 * (q - p));
+  };
+  int k = 0;
+  v[0] = 0;
+  z[0] = -kFar * 10;
+  z[1] = kFar * 10;
+  for (int q = 1; q < n; ++q) {
+    double s = meet(q, v[k]);
+    while (k > 0 && s <= z[k]) s = meet(q, v[--k]);
+    ++k;
+    v[k] = q;
+    z[k] = s;
+    z[k + 1] = kFar * 10;
+  }
+  k = 0;
+  for (int q = 0; q < n; ++q) {
+    while (z[k + 1] < q) ++k;
+    d[q] = double(q - v[k]) * (q - v[k]) + f[v[k]];
+  }
+}
+
+// Clearance of every free cell: distance (m) from its centre to the nearest blocked cell centre,
+// less half a cell (the boundary lies between them); cells outside the raster count as blocked.
+void clearance(Raster& g) {
+  const int w = g.nx + 2, h = g.ny + 2;  // a blocked frame around the raster
+  std::vector<double> grid(static_cast<std::size_t>(w) * h, 0.0);
+  for (int j = 0; j < g.ny; ++j)
+    for (int i = 0; i < g.nx; ++i) grid[(j + 1) * w + i + 1] = g.free[g.index(i, j)] ? kFar : 0.0;
+  std::vector<double> f(w), d(w), z(w + 1);
+  std::vector<int> v(w);
+  for (int j = 0; j < h; ++j) {
+    f.assign(grid.begin() + j * w, grid.begin() + (j + 1) * w);
+    edt_1d(f, d, v, z);
+    std::copy(d.begin(), d.end(), grid.begin() + j * w);
+  }
+  f.resize(h), d.resize(h), v.resize(h), z.resize(h + 1);
+  for (int i = 0; i < w; ++i) {
+    for (int j = 0; j < h; ++j) f[j] = grid[j * w + i];
+    edt_1d(f, d, v, z);
+    for (int j = 0; j < h; ++j) grid[j * w + i] = d[j];
+  }
+  g.clear.assign(g.free.size(), 0.0f);
+  for (int j = 0; j < g.ny; ++j)
+    for (int i = 0; i < g.nx; ++i)
+      g.clear[g.index(i, j)] =
+          std::max(0.0f, float((std::sqrt(grid[(j + 1) * w + i + 1]) - 0.5) * g.res));
+}
+
+Raster rasterize(const Region& r, const GuideParams& p) {
+  Raster g;
+  double lo_x = kInf, lo_y = kInf, hi_x = -kInf, hi_y = -kInf;
+  for (const Point& v : r.outer.vertices) {
+    lo_x = std::min(lo_x, v.x()), lo_y = std::min(lo_y, v.y());
+    hi_x = std::max(hi_x, v.x()), hi_y = std::max(hi_y, v.y());
+  }
+  g.res = p.resolution;
+  const double cells = (hi_x - lo_x) * (hi_y - lo_y) / (g.res * g.res);
+  if (cells > double(p.max_cells)) g.res *= std::sqrt(cells / double(p.max_cells));
+  g.x0 = lo_x, g.y0 = lo_y;
+  g.nx = std::max(1, static_cast<int>(std::ceil((hi_x - lo_x) / g.res)));
+  g.ny = std::max(1, static_cast<int>(std::ceil((hi_y - lo_y) / g.res)));
+  g.free.assign(static_cast<std::size_t>(g.nx) * g.ny, 0);
+  fill(r, g);
+  clearance(g);
+  return g;
+}
+
+// The free cell nearest to x among those within kEndpointSearchCells whose centre x sees in F_k.
+std::optional<int> endpoint_cell(const Raster& g, const Region& r, const Point& x) {
+  const int ci = static_cast<int>(std::floor((x.x() - g.x0) / g.res));
+  const int cj = static_cast<int>(std::floor((x.y() - g.y0) / g.res));
+  std::optional<int> best;
+  double best_d = kInf;
+  for (int j = cj - kEndpointSearchCells; j <= cj + kEndpointSearchCells; ++j) {
+    for (int i = ci - kEndpointSearchCells; i <= ci + kEndpointSearchCells; ++i) {
+      if (i < 0 || j < 0 || i >= g.nx || j >= g.ny || !g.free[g.index(i, j)]) continue;
+      const double d = (g.center(i, j) - x).norm();
+      if (d < best_d && segment_clear(r, x, g.center(i, j), 0)) best_d = d, best = g.index(i, j);
+    }
+  }
+  return best;
+}
+
+// A* over 8-neighbours; returns cell indices from start to goal.
+std::optional<std::vector<int>> search(const Raster& g, int start, int goal, const GuideParams& p) {
+  const Point target = g.center(goal % g.nx, goal / g.nx);
+  std::vector<float> cost(g.free.size(), kInf);
+  std::vector<int> parent(g.free.size(), -1);
+  using Entry = std::pair<float, int>;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open;
+  cost[start] = 0;
+  open.push({float((g.center(start % g.nx, start / g.nx) - target).norm()), start});
+  constexpr int kDi[8] = {1, -1, 0, 0, 1, 1, -1, -1};
+  constexpr int kDj[8] = {0, 0, 1, -1, 1, -1, 1, -1};
+  while (!open.empty()) {
+    const auto [f, c] = open.top();
+    open.pop();
+    if (c == goal) break;
+    const int i = c % g.nx, j = c / g.nx;
+    const Point pc = g.center(i, j);
+    if (f - float((pc - target).norm()) > cost[c] + 1e-4f) continue;  // stale entry
+    for (int k = 0; k < 8; ++k) {
+      const int ni = i + kDi[k], nj = j + kDj[k];
+      if (ni < 0 || nj < 0 || ni >= g.nx || nj >= g.ny) continue;
+      const int n = g.index(ni, nj);
+      if (!g.free[n]) continue;
+      // A diagonal step needs both orthogonal neighbours free (no corner cutting).
+      if (k >= 4 && (!g.free[g.index(ni, j)] || !g.free[g.index(i, nj)])) continue;
+      const double shortfall = std::max(0.0, 1.0 - g.clear[n] / p.comfort);
+      const float step =
+          float((k < 4 ? 1.0 : std::sqrt(2.0)) * g.res * (1 + p.comfort_weight * shortfall));
+      if (cost[c] + step < cost[n]) {
+        cost[n] = cost[c] + step;
+        parent[n] = c;
+        open.push({cost[n] + float((g.center(ni, nj) - target).norm()), n});
+      }
+    }
+  }
+  if (cost[goal] == kInf) return std::nullopt;
+  std::vector<int> cells;
+  for (int c = goal; c != -1; c = parent[c]) cells.push_back(c);
+  std::reverse(cells.begin(), cells.end());
+  return cells;
+}
+
+// Shortcuts the polyline: from each anchor, the farthest point reached by clear segments before
+// the first that is not (a narrow stretch keeps the raster's own steps).
+std::vector<Point> shortcut(const Region& r, const std::vector<Point>& line, double c) {
+  std::vector<Point> out;
+  std::size_t anchor = 0;
+  while (anchor + 1 < line.size()) {
+    std::size_t next = anchor + 1;
+    for (std::size_t k = anchor + 2; k < line.size(); ++k) {
+      if (!segment_clear(r, line[anchor], line[k], c)) break;
+      next = k;
+    }
+    out.push_back(line[next]);
+    anchor = next;
+  }
+  return out;
+}
+
+double cross(const Point& a, const Point& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+bool segments_cross(const Point& a, const Point& b, const Point& c, const Point& d) {
+  const double d1 = cross(b - a, c - a), d2 = cross(b - a, d - a);
+  const double d3 = cross(d - c, a - c), d4 = cross(d - c, b - c);
+  return ((d1 > 0) != (d2 > 0)) && ((d3 > 0) != (d4 > 0)) && d1 != 0 && d2 != 0 && d3 != 0 &&
+         d4 != 0;
+}
+
+double segment_distance(const Point& a, const Point& b, const Point& c, const Point& d) {
+  if (segments_cross(a, b, c, d)) return 0;
+  return std::min({(geometry::nearest_on_segment(c, d, a) - a).norm(),
+                   (geometry::nearest_on_segment(c, d, b) - b).norm(),
+                   (geometry::nearest_on_segment(a, b, c) - c).norm(),
+                   (geometry::nearest_on_segment(a, b, d) - d).norm()});
+}
+
+}  // namespace
+
+void validate(const GuideParams& p) {
+  const std::pair<const char*, double> positive[] = {{"resolution", p.resolution},
+                                                     {"comfort", p.comfort},
+                                                     {"comfort_weight", p.comfort_weight},
+                                                     {"clearance", p.clearance},
+                                                     {"reach", p.reach}};
+  for (const auto& [name, v] : positive) {
+    if (!std::isfinite(v) || !(v > 0)) {
+      throw Error(std::string("guide: ") + name + " must be finite and > 0");
+    }
+  }
+  if (p.max_cells < 16) throw Error("guide: max_cells must be at least 16");
+  if (p.max_recoveries < 0) throw Error("guide: max_recoveries must be >= 0");
+}
+
+bool segment_clear(const Region& free, const Point& a, const Point& b, double c) {
+  if (!geometry::contains(free, a) || !geometry::contains(free, b)) return false;
+  bool ok = true;
+  for_each_edge(free, [&](const Point& p, const Point& q) {
+    if (ok && (segments_cross(a, b, p, q) || (c > 0 && segment_distance(a, b, p, q) < c))) {
+      ok = false;
+    }
+  });
+  return ok && geometry::contains(free, Point((a + b) / 2));
+}
+
+std::optional<Point> nearest_clear_point(const Region& free, const Point& from, double clearance,
+                                         const std::function<bool(const Point&)>& accept,
+                                         const GuideParams& p) {
+  validate(p);
+  if (!from.allFinite() || !std::isfinite(clearance)) {
+    throw Error("drop point: the start and the clearance must be finite");
+  }
+  const Raster g = rasterize(free, p);
+  const std::optional<int> s = endpoint_cell(g, free, from);
+  if (!s) return std::nullopt;
+  std::vector<float> cost(g.free.size(), kInf);
+  using Entry = std::pair<float, int>;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open;
+  cost[*s] = 0;
+  open.push({0.0f, *s});
+  constexpr int kDi[8] = {1, -1, 0, 0, 1, 1, -1, -1};
+  constexpr int kDj[8] = {0, 0, 1, -1, 1, -1, 1, -1};
+  while (!open.empty()) {
+    const auto [d, c] = open.top();
+    open.pop();
+    if (d > cost[c]) continue;
+    const int i = c % g.nx, j = c / g.nx;
+    if (g.clear[c] >= clearance && accept(g.center(i, j))) return g.center(i, j);
+    for (int k = 0; k < 8; ++k) {
+      const int ni = i + kDi[k], nj = j + kDj[k];
+      if (ni < 0 || nj < 0 || ni >= g.nx || nj >= g.ny) continue;
+      const int n = g.index(ni, nj);
+      if (!g.free[n] || (k >= 4 && (!g.free[g.index(ni, j)] || !g.free[g.index(i, nj)]))) continue;
+      const float step = float((k < 4 ? 1.0 : std::sqrt(2.0)) * g.res);
+      if (cost[c] + step < cost[n]) {
+        cost[n] = cost[c] + step;
+        open.push({cost[n], n});
+      }
+    }
+  }
+  return std::nullopt;
+}
+
+std::optional<std::vector<Point>> guide_path(const Region& free, const Point& from, const Point& to,
+                                             const GuideParams& p) {
+  validate(p);
+  if (!from.allFinite() || !to.allFinite()) throw Error("guide: endpoints must be finite");
+  const Raster g = rasterize(free, p);
+  const std::optional<int> s = endpoint_cell(g, free, from);
+  const std::optional<int> t = endpoint_cell(g, free, to);
+  if (!s || !t) return std::nullopt;
+  const std::optional<std::vector<int>> cells = search(g, *s, *t, p);
+  if (!cells) return std::nullopt;
+  std::vector<Point> line{from};
+  for (int c : *cells) line.push_back(g.center(c % g.nx, c / g.nx));
+  line.push_back(to);
+  return shortcut(free, line, p.clearance);
+}
+
+}  // namespace rearm::executive

@@ -1,0 +1,110 @@
+// The guide path of the robust variant (executive/guide_path.h) against exact geometry: every
+// point of every leg lies in the region (geometry::contains, exact predicates, sampled every
+// millimetre), the length is bounded below by the true shortest path (computed by hand for
+// each scene: a taut string around the corners) and above by a small factor of it, and points
+// in different components or outside the region get no path.
+#include "executive/guide_path.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "core/error.h"
+#include "geometry/polygon.h"
+
+namespace rearm::executive {
+namespace {
+
+using geometry::Point;
+using geometry::Polygon;
+using geometry::Region;
+
+Polygon box(double x0, double y0, double x1, double y1) {
+  return Polygon{{Point(x0, y0), Point(x1, y0), Point(x1, y1), Point(x0, y1)}};
+}
+
+// Every sampled point of the polyline from → path is in the region; returns its length.
+double check_inside(const Region& r, const Point& from, const std::vector<Point>& path) {
+  double length = 0;
+  Point a = from;
+  for (const Point& b : path) {
+    const double l = (b - a).norm();
+    const int n = std::max(1, static_cast<int>(std::ceil(l / 1e-3)));
+    for (int k = 0; k <= n; ++k) {
+      const Point q = a + (b - a) * (double(k) / n);
+      EXPECT_TRUE(geometry::contains(r, q)) << "leg point (" << q.x() << ", " << q.y() << ")";
+    }
+    length += l;
+    a = b;
+  }
+  return length;
+}
+
+TEST(GuidePath, GoesAroundAWallNearTheShortestLength) {
+  const Region r{box(0, 0, 10, 10), {box(4, 1, 6, 9)}};
+  const Point from(2, 5), to(8, 5);
+  const auto path = guide_path(r, from, to, GuideParams{});
+  ASSERT_TRUE(path.has_value());
+  EXPECT_EQ(path->back(), to);
+  // Taut string over a corner pair of the wall: 2·√(2² + 4²) + 2.
+  const double shortest = 2 * std::sqrt(20.0) + 2;
+  const double length = check_inside(r, from, *path);
+  EXPECT_GE(length, shortest - 1e-9);
+  EXPECT_LE(length, 1.1 * shortest);
+  EXPECT_GE(path->size(), 3u);  // at least the two corners before x*
+}
+
+TEST(GuidePath, ThreadsANarrowPassageWhenItIsTheOnlyWay) {
+  // Two walls from the outer boundary's bottom and top leave a gap 0.12 m wide at y = 5.
+  const Polygon outer{{Point(0, 0), Point(4, 0), Point(4, 4.94), Point(6, 4.94), Point(6, 0),
+                       Point(10, 0), Point(10, 10), Point(6, 10), Point(6, 5.06), Point(4, 5.06),
+                       Point(4, 10), Point(0, 10)}};
+  const Region r{outer, {}};
+  const Point from(2, 5), to(8, 5);
+  const auto path = guide_path(r, from, to, GuideParams{});
+  ASSERT_TRUE(path.has_value());
+  const double length = check_inside(r, from, *path);
+  EXPECT_GE(length, 6 - 1e-9);
+  EXPECT_LE(length, 6.5);
+}
+
+TEST(GuidePath, NoPathBetweenComponentsOrFromOutside) {
+  // A closed room (the hole's ring) inside a ring-shaped region: the inside of the hole is not
+  // in the region, and the region's two sides of a closed wall are one component, so use a
+  // point inside the hole (outside the region) as the unreachable end.
+  const Region r{box(0, 0, 10, 10), {box(3, 3, 7, 7)}};
+  EXPECT_FALSE(guide_path(r, Point(1, 1), Point(5, 5), GuideParams{}).has_value());
+  EXPECT_FALSE(guide_path(r, Point(5, 5), Point(1, 1), GuideParams{}).has_value());
+  EXPECT_FALSE(guide_path(r, Point(-1, 1), Point(9, 9), GuideParams{}).has_value());
+}
+
+TEST(GuidePath, ASegmentInSightIsOneLeg) {
+  const Region r{box(0, 0, 10, 10), {box(4, 6, 6, 9)}};
+  const auto path = guide_path(r, Point(1, 2), Point(9, 2), GuideParams{});
+  ASSERT_TRUE(path.has_value());
+  ASSERT_EQ(path->size(), 1u);
+  EXPECT_EQ(path->front(), Point(9, 2));
+}
+
+TEST(GuidePath, SegmentClearMeasuresTheDistanceToTheBoundary) {
+  const Region r{box(0, 0, 10, 10), {box(4, 4, 6, 6)}};
+  // The segment y = 3.9 passes 0.1 m below the hole.
+  EXPECT_TRUE(segment_clear(r, Point(1, 3.9), Point(9, 3.9), 0.09));
+  EXPECT_FALSE(segment_clear(r, Point(1, 3.9), Point(9, 3.9), 0.11));
+  EXPECT_FALSE(segment_clear(r, Point(1, 5), Point(9, 5), 0));  // through the hole
+}
+
+TEST(GuidePath, RejectsBadParametersAndPoints) {
+  const Region r{box(0, 0, 10, 10), {}};
+  GuideParams p;
+  p.resolution = -1;
+  EXPECT_THROW(guide_path(r, Point(1, 1), Point(2, 2), p), Error);
+  p = GuideParams{};
+  p.comfort = std::nan("");
+  EXPECT_THROW(validate(p), Error);
+  EXPECT_THROW(guide_path(r, Point(1, std::nan("")), Point(2, 2), GuideParams{}), Error);
+}
+
+}  // namespace
+}  // namespace rearm::executive

@@ -1,0 +1,65 @@
+// The saddle of [7]'s law behind a round obstacle: the robot starts on the line through the
+// obstacle's centre and the goal, heading at the goal. The scene is mirror-symmetric about that
+// line, so the paper's law keeps y on it (the nearest obstacle point, the projection of the goal
+// and the heading all stay on the line, exactly in floating point on the kinematic plant) and
+// comes to rest at the saddle in front of the obstacle. The robust variant's progress monitor
+// finds the rest point and its guide (executive/guide_path.h) leads around. Truth: the
+// robot's final position located exactly in the goal region, and the plant's exact clearance.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "experiment/run_scenario.h"
+#include "geometry/convex.h"
+#include "geometry/polygon.h"
+#include "scenario/scenario.h"
+
+namespace rearm::experiment {
+namespace {
+
+using geometry::Point;
+using geometry::Polygon;
+
+Polygon box(double x0, double y0, double x1, double y1) {
+  return Polygon{{Point(x0, y0), Point(x1, y0), Point(x1, y1), Point(x0, y1)}};
+}
+
+scenario::Scenario saddle_scene(const char* variant) {
+  scenario::Scenario s;
+  s.name = std::string("saddle_") + variant;
+  s.workspace = box(0, 0, 12, 10);
+  s.robot.start = Point(2, 5);
+  s.robot.heading = 0;
+  s.regions.push_back({"l1", box(9.5, 4.5, 10.5, 5.5)});
+  // A 32-gon of radius 1.2 with a vertex on the line y = 5 on either side: symmetric about it.
+  s.unknown.push_back({"C1", geometry::regular_polygon({Point(6, 5), 1.2}, 32, false)});
+  s.task = "<>move(l1)";
+  scenario::set_variant(s.controller, variant);
+  s.simulation.time_budget = 400;
+  return s;
+}
+
+TEST(Saddle, ThePaperVariantRestsAtTheSaddle) {
+  RunOptions o;
+  o.plant = PlantKind::kKinematic;
+  const RunRecord r = run_scenario(saddle_scene("paper"), o);
+  EXPECT_EQ(r.result.status, executive::TaskStatus::kStuck) << r.result.reason;
+  EXPECT_EQ(r.result.collisions, 0);
+}
+
+TEST(Saddle, TheRobustVariantLeavesItAndReachesTheGoal) {
+  RunOptions o;
+  o.plant = PlantKind::kKinematic;
+  const scenario::Scenario s = saddle_scene("robust");
+  const RunRecord r = run_scenario(s, o);
+  ASSERT_EQ(r.result.status, executive::TaskStatus::kCompleted) << r.result.reason;
+  EXPECT_EQ(r.result.collisions, 0);
+  EXPECT_GT(r.result.min_clearance, 0);
+  EXPECT_GE(r.result.recoveries.guides, 1);
+  ASSERT_FALSE(r.result.path.empty());
+  EXPECT_TRUE(geometry::contains(s.regions[0].polygon, r.result.path.back().x));
+}
+
+}  // namespace
+}  // namespace rearm::experiment
