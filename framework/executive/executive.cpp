@@ -10,6 +10,7 @@
 #include "core/error.h"
 #include "core/stopwatch.h"
 #include "geometry/dilation.h"
+#include "geometry/distance.h"
 #include "reactive/grasp.h"
 #include "reactive/navigation.h"
 #include "topology/topology_check.h"
@@ -503,7 +504,9 @@ Executive::Advance Executive::rebuild(Activity& a, double radius, const Point& c
   a.built_target = target;
   a.built_radius = radius;
   a.goal = controller_.goal();
-  if (!a.guide.empty()) {
+  // A guide in use stays while its next waypoint is still free (a path costs tens of ms; the
+  // map changes every few ticks as fragments grow), else it is planned again.
+  if (!a.guide.empty() && !reactive::in_freespace(controller_.mapped(), a.guide.front())) {
     const auto path = guide_path(controller_.mapped().freespace, center, a.goal, p_.guide);
     a.guide = path ? std::vector<Point>(path->begin(), path->end() - 1) : std::vector<Point>{};
   }
@@ -554,6 +557,21 @@ std::optional<Executive::Advance> Executive::arrive(Activity& a, const Point& ce
 Executive::Advance Executive::recover(Activity& a, const Point& center, const std::string& why,
                                       double t) {
   Advance out;
+  if (a.kind == Kind::kRelease && p_.robust.early_release && map_.carried() == a.object) {
+    // RELEASE(M, ℓ) holds once M lies in ℓ (paper §II-B), wherever in ℓ: stopped short of the
+    // centroid with M inside ℓ, release here.
+    const geometry::Disk m = *map_.object(a.object);
+    const geometry::Polygon& goal = region(a.region).polygon;
+    if (geometry::contains(goal, m.center) &&
+        -geometry::signed_distance(goal, m.center) >= p_.goal_tolerance) {
+      ++recoveries_.early_releases;
+      a.note = "early release at " + point_text(m.center) + " inside " + a.region + " (" + why + ")";
+      a.phase = Phase::kOpen;
+      a.phase_start = t;
+      a.open_sent = false;
+      return out;  // stop for one tick, then open
+    }
+  }
   out.kind = Advance::kStuck;
   out.reason = why;
   if (!p_.robust.guide) return out;
@@ -681,14 +699,15 @@ double Executive::max_object_radius() const {
 // Robust drop rule: the paper's early-stop test (clear of every region, and 2(r + max ρ) from
 // everything known), with kDropClearance (r + max ρ) instead of 2(r + max ρ), so that the
 // dropped object leaves a passage for the pair between itself and anything else.
-bool Executive::drop_clear(const Point& xc, double rho) const {
+bool Executive::drop_clear(const Point& xc, double rho, double slack) const {
   const std::optional<std::string> carried = map_.carried();
   if (!carried) return false;
-  if (!disassembly_done(xc, p_.robot_radius + rho, p_.robot_radius, map_, *carried, regions_)) {
+  if (!disassembly_done(xc, p_.robot_radius + rho + slack, p_.robot_radius, map_, *carried,
+                        regions_)) {
     return false;
   }
   return known_clearance(map_, xc, *carried) >=
-         kDropClearance * (p_.robot_radius + max_object_radius());
+         kDropClearance * (p_.robot_radius + max_object_radius()) + slack;
 }
 
 double Executive::plan_radius() const { return p_.robot_radius + p_.robust.contact_margin; }
@@ -745,7 +764,8 @@ Executive::Advance Executive::plan(Activity& a, const Pose& pose) {
                            !drop_clear(*a.target, rho))) {
       // Searched in the pair's mapped freespace F_k (the visible unknown fragments included, as
       // the reactive controller will see it); F when the centre is not in F_k.
-      const double need = kDropClearance * (p_.robot_radius + max_object_radius()) - radius;
+      const double need =
+          kDropClearance * (p_.robot_radius + max_object_radius()) + kDropSlack - radius;
       geometry::Region where = res.freespace;
       try {
         const ScopedStopwatch sw(times_.rebuild_s);
@@ -759,7 +779,7 @@ Executive::Advance Executive::plan(Activity& a, const Pose& pose) {
         for (const Point& x : a.rejected_drops) {
           if ((q - x).norm() < avoid) return false;
         }
-        return drop_clear(q, rho);
+        return drop_clear(q, rho, kDropSlack);
       };
       a.target = nearest_clear_point(where, center, need, accept, p_.guide);
     }

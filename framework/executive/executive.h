@@ -59,6 +59,9 @@ namespace rearm::executive {
 inline constexpr double kDropClearance = 3;
 // Drop points chosen again per DISASSEMBLE when a newly seen fragment takes the last one.
 inline constexpr int kMaxDropRetargets = 8;
+// m by which a chosen drop point beats the drop rule, so that the early stop holds within this
+// distance of it (the law converges to x* only asymptotically near obstacles).
+inline constexpr double kDropSlack = 0.15;
 
 struct RobustParams {
   // When the progress monitor fires, follow waypoints of a path in the known freespace
@@ -83,6 +86,11 @@ struct RobustParams {
   // nearest_clear_point), and stops early only there; the paper's target (an edge midpoint of F,
   // i.e. against an obstacle or the boundary) when no such point is reachable.
   bool drop = true;
+  // When the progress monitor fires during RELEASE and the carried object's centre already lies
+  // in the goal region, goal_tolerance inside it, the object is released there (the predicate
+  // holds anywhere in the region; the paper drives the pair to the region's centroid, §IV,
+  // which a pocket or a cluster can make unreachable). Before the guide.
+  bool early_release = true;
   // When the mission is accepting, release again into its region every object an LTL RELEASE
   // placed and Fix mode later moved away (the formula holds, the end state would not).
   bool restore = true;
@@ -96,6 +104,7 @@ struct RecoveryCounts {
   int singular = 0;   // actions switched to convex pieces after a singular Dh
   int fallbacks = 0;  // rebuilds that kept clusters as convex pieces
   int restores = 0;   // objects released into their regions again after Fix mode moved them
+  int early_releases = 0;  // RELEASEs ended short of the centroid with the object in the region
 };
 
 struct ExecutiveParams {
@@ -273,7 +282,8 @@ class Executive {
   // The robot radius of every planning freespace: r + RobustParams::contact_margin.
   double plan_radius() const;
   double max_object_radius() const;
-  bool drop_clear(const Point& xc, double rho) const;
+  // Robust drop rule at the pair centre xc; `slack` (m) tightens both tests.
+  bool drop_clear(const Point& xc, double rho, double slack = 0) const;
   double object_radius(const std::string& id) const;
   bool knowledge_changed(const Activity& a) const;
 

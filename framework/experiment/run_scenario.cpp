@@ -97,6 +97,7 @@ std::string metrics_json(const scenario::Scenario& s, const RunRecord& r) {
   j.key("singular_switches").value(t.recoveries.singular);
   j.key("convex_fallbacks").value(t.recoveries.fallbacks);
   j.key("restores").value(t.recoveries.restores);
+  j.key("early_releases").value(t.recoveries.early_releases);
   j.end_object();
   j.key("robot_path_length_m").value(t.robot_path_length);
   j.key("object_path_length_m").value(t.object_path_length);

@@ -57,6 +57,7 @@ executive::TaskSpec task_spec(const scenario::Scenario& s) {
   e.robust.back_out = s.controller.back_out;
   e.robust.restore = s.controller.restore;
   e.robust.drop = s.controller.drop;
+  e.robust.early_release = s.controller.early_release;
   if (s.controller.variant == "paper") e.robust.contact_margin = 0;
   e.max_ltl_actions = s.simulation.max_actions;
   return t;

@@ -85,6 +85,7 @@ void outcome_fields(const TrialRecord& r, std::vector<std::string>& f) {
   f.push_back(integer(o.recoveries.singular));
   f.push_back(integer(o.recoveries.fallbacks));
   f.push_back(integer(o.recoveries.restores));
+  f.push_back(integer(o.recoveries.early_releases));
   f.push_back(integer(o.collisions));
   f.push_back(exact(o.min_clearance_m));
   f.push_back(integer(o.queries));
@@ -139,6 +140,7 @@ const std::vector<std::string>& trial_columns() {
                                                    "singular_switches",
                                                    "convex_fallbacks",
                                                    "restores",
+                                                   "early_releases",
                                                    "collisions",
                                                    "min_clearance_m",
                                                    "queries",

@@ -61,6 +61,7 @@ struct Controller {
   bool back_out = true;         // robust only: back up when the centre is not free
   bool restore = true;          // robust only: re-place objects Fix mode moved off their goal
   bool drop = true;             // robust only: drop disassembled objects clear of everything
+  bool early_release = true;    // robust only: release once the object is inside its region
 };
 
 // The robust variant's switches by key (scenario files; the ablation methods "rearm-no<key>").
@@ -73,7 +74,8 @@ inline constexpr RobustSwitch kRobustSwitches[] = {
     {"convex_fallback", &Controller::convex_fallback},
     {"back_out", &Controller::back_out},
     {"restore", &Controller::restore},
-    {"drop", &Controller::drop}};
+    {"drop", &Controller::drop},
+    {"early_release", &Controller::early_release}};
 
 // Sets the variant ("robust" or "paper") and every switch: all on, or all off.
 inline void set_variant(Controller& c, const std::string& variant) {
