@@ -106,7 +106,7 @@ int run_run(const std::vector<std::string>& args) {
         "%d convex fallbacks, %d restores, %d early releases\n",
         s.controller.variant.c_str(), t.recoveries.guides, t.recoveries.back_outs,
         t.recoveries.singular, t.recoveries.fallbacks, t.recoveries.restores,
-                t.recoveries.early_releases);
+        t.recoveries.early_releases);
   }
   std::printf("wrote %s and %s\n", metrics.string().c_str(), trajectory.string().c_str());
 

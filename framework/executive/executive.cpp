@@ -565,7 +565,8 @@ Executive::Advance Executive::recover(Activity& a, const Point& center, const st
     if (geometry::contains(goal, m.center) &&
         -geometry::signed_distance(goal, m.center) >= p_.goal_tolerance) {
       ++recoveries_.early_releases;
-      a.note = "early release at " + point_text(m.center) + " inside " + a.region + " (" + why + ")";
+      a.note =
+          "early release at " + point_text(m.center) + " inside " + a.region + " (" + why + ")";
       a.phase = Phase::kOpen;
       a.phase_start = t;
       a.open_sent = false;

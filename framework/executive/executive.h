@@ -99,11 +99,11 @@ struct RobustParams {
 
 // How often each recovery of the robust variant fired in a run.
 struct RecoveryCounts {
-  int guides = 0;     // guide paths followed after the progress monitor fired
-  int back_outs = 0;  // straight back-ups out of a dilation
-  int singular = 0;   // actions switched to convex pieces after a singular Dh
-  int fallbacks = 0;  // rebuilds that kept clusters as convex pieces
-  int restores = 0;   // objects released into their regions again after Fix mode moved them
+  int guides = 0;          // guide paths followed after the progress monitor fired
+  int back_outs = 0;       // straight back-ups out of a dilation
+  int singular = 0;        // actions switched to convex pieces after a singular Dh
+  int fallbacks = 0;       // rebuilds that kept clusters as convex pieces
+  int restores = 0;        // objects released into their regions again after Fix mode moved them
   int early_releases = 0;  // RELEASEs ended short of the centroid with the object in the region
 };
 

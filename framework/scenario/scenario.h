@@ -70,12 +70,9 @@ struct RobustSwitch {
   bool Controller::*flag;
 };
 inline constexpr RobustSwitch kRobustSwitches[] = {
-    {"guide", &Controller::guide},
-    {"convex_fallback", &Controller::convex_fallback},
-    {"back_out", &Controller::back_out},
-    {"restore", &Controller::restore},
-    {"drop", &Controller::drop},
-    {"early_release", &Controller::early_release}};
+    {"guide", &Controller::guide},       {"convex_fallback", &Controller::convex_fallback},
+    {"back_out", &Controller::back_out}, {"restore", &Controller::restore},
+    {"drop", &Controller::drop},         {"early_release", &Controller::early_release}};
 
 // Sets the variant ("robust" or "paper") and every switch: all on, or all off.
 inline void set_variant(Controller& c, const std::string& variant) {
