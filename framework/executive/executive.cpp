@@ -433,7 +433,7 @@ Executive::Advance Executive::navigate(Activity& a, const Pose& pose, double t, 
   if (!a.built || a.built_version != map_.version() || a.built_target != *a.target ||
       a.built_radius != radius) {
     Advance b = rebuild(a, radius, center, t);
-    if (b.kind == Advance::kRestart && !a.built) return start_back_out(a, pose, b.reason, t, dt);
+    if (b.center_not_free) return start_back_out(a, pose, b.reason, t, dt);
     if (b.kind != Advance::kCommand) return b;
   }
   // The guide's waypoints (robust variant): passed ones are dropped, the next is the law's goal.
@@ -455,8 +455,8 @@ Executive::Advance Executive::navigate(Activity& a, const Pose& pose, double t, 
 }
 
 // The diffeomorphism for the current map, radius and x* (reactive controller of [7]); a guide
-// in use is planned again in the new mapped space. kRestart with a.built false: the centre is
-// not in the freespace (the caller backs out).
+// whose next waypoint left the new mapped space is planned again. center_not_free: the centre
+// is not in the freespace (the caller backs out, or ends stuck in the paper variant).
 Executive::Advance Executive::rebuild(Activity& a, double radius, const Point& center, double t) {
   Advance out;
   const Point target = *a.target;
@@ -468,7 +468,7 @@ Executive::Advance Executive::rebuild(Activity& a, double radius, const Point& c
   }
   if (rr.status == reactive::RebuildStatus::kCenterNotFree) {
     a.built = false;
-    out.kind = p_.robust.back_out ? Advance::kRestart : Advance::kStuck;
+    out.center_not_free = true;  // the caller backs out (or ends stuck without back_out)
     out.reason = rr.message;
     return out;
   }
@@ -482,7 +482,6 @@ Executive::Advance Executive::rebuild(Activity& a, double radius, const Point& c
       a.target.reset();
       out.kind = Advance::kRestart;
       out.reason = rr.message;
-      a.built = true;  // not a centre failure
     } else if (a.kind == Kind::kDisassemble) {
       out.kind = Advance::kStuck;
       out.reason =

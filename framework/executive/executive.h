@@ -254,6 +254,7 @@ class Executive {
     Twist u;
     std::string reason;
     std::vector<std::string> blocking;  // B_M, top last (kBlocked)
+    bool center_not_free = false;       // rebuild(): the centre left its freespace
   };
 
   Activity* current();
