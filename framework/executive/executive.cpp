@@ -196,7 +196,13 @@ bool Executive::fetch_ltl(double t) {
   if (!next) {
     switch (mission_.status()) {
       case symbolic::MissionStatus::Infeasible:
-        finish(TaskStatus::kInfeasible, "mission infeasible: " + mission_.reason(), t);
+        if (!stuck_.empty()) {
+          // The alternatives ran out after actions the controller could not complete: the
+          // task ends stuck (a controller failure), not proven infeasible.
+          finish(TaskStatus::kStuck, stuck_ + "; no alternative action: " + mission_.reason(), t);
+        } else {
+          finish(TaskStatus::kInfeasible, "mission infeasible: " + mission_.reason(), t);
+        }
         break;
       case symbolic::MissionStatus::Accepting:
         if (restore_next(t)) return true;
@@ -263,12 +269,9 @@ Command Executive::step(const Pose& pose, double t, double dt) {
       case Advance::kBlocked:
         enter_fix(r.blocking, t);
         break;
-      case Advance::kStuck: {
-        const std::string what = a->name() + ": " + r.reason;
-        end_current(ActionOutcome::kStuck, r.reason, t);
-        finish(TaskStatus::kStuck, what, t);
+      case Advance::kStuck:
+        end_stuck(r.reason, t);
         break;
-      }
     }
   }
   if (!finished()) {
@@ -449,7 +452,7 @@ Executive::Advance Executive::navigate(Activity& a, const Pose& pose, double t, 
   if (std::optional<Advance> done = arrive(a, center, rho, t)) return *done;
   if (auto stuck =
           a.monitor.observe(t, pose, (center - controller_.goal()).norm(), map_.version())) {
-    return recover(a, center, *stuck, t);
+    return recover(a, pose, center, *stuck, t, dt);
   }
   return command(a, pose, rho, t, dt);
 }
@@ -503,6 +506,11 @@ Executive::Advance Executive::rebuild(Activity& a, double radius, const Point& c
   a.built_target = target;
   a.built_radius = radius;
   a.goal = controller_.goal();
+  if (a.guide_pending) {
+    a.guide_pending = false;
+    std::string note;
+    plan_guide(a, center, t, note);
+  }
   // A guide in use stays while its next waypoint is still free (a path costs tens of ms; the
   // map changes every few ticks as fragments grow), else it is planned again.
   if (!a.guide.empty() && !reactive::in_freespace(controller_.mapped(), a.guide.front())) {
@@ -553,8 +561,8 @@ std::optional<Executive::Advance> Executive::arrive(Activity& a, const Point& ce
 
 // The progress monitor fired (a rest point, saddle or limit cycle of [7]): in the robust
 // variant the law's goal becomes the next waypoint of a path in the known freespace F_k.
-Executive::Advance Executive::recover(Activity& a, const Point& center, const std::string& why,
-                                      double t) {
+Executive::Advance Executive::recover(Activity& a, const Pose& pose, const Point& center,
+                                      const std::string& why, double t, double dt) {
   Advance out;
   if (a.kind == Kind::kRelease && p_.robust.early_release && map_.carried() == a.object) {
     // RELEASE(M, ℓ) holds once M lies in ℓ (paper §II-B), wherever in ℓ: stopped short of the
@@ -575,22 +583,41 @@ Executive::Advance Executive::recover(Activity& a, const Point& center, const st
   out.kind = Advance::kStuck;
   out.reason = why;
   if (!p_.robust.guide) return out;
-  if (a.guides >= p_.guide.max_recoveries) {
-    out.reason += " (after " + std::to_string(a.guides) + " guide paths)";
+  if (p_.robust.back_out && a.contact_outs < p_.robust.max_back_outs &&
+      boundary_distance(controller_.mapped().freespace, center) < kContactClearance) {
+    // Pressed onto ∂F_k (kContactClearance): back out first, then follow a guide planned from
+    // where the back-up ends (the next rebuild).
+    ++a.contact_outs;
+    a.guide.clear();
+    a.guide_pending = true;
+    Advance b = start_back_out(a, pose, why, t, dt, /*contact=*/true);
+    if (b.kind != Advance::kStuck) return b;
+    a.guide_pending = false;
+  }
+  std::string note;
+  if (!plan_guide(a, center, t, note)) {
+    out.reason += note;
     return out;
+  }
+  out.kind = Advance::kRestart;
+  return out;
+}
+
+bool Executive::plan_guide(Activity& a, const Point& center, double t, std::string& note) {
+  if (a.guides >= p_.guide.max_recoveries) {
+    note = " (after " + std::to_string(a.guides) + " guide paths)";
+    return false;
   }
   const auto path = guide_path(controller_.mapped().freespace, center, a.goal, p_.guide);
   if (!path || path->size() < 2) {
-    out.reason +=
-        path ? " (x* is in sight: no guide helps)" : " (no guide path in the known freespace)";
-    return out;
+    note = path ? " (x* is in sight: no guide helps)" : " (no guide path in the known freespace)";
+    return false;
   }
   a.guide.assign(path->begin(), path->end() - 1);
   ++a.guides;
   ++recoveries_.guides;
   a.monitor.reset(t);
-  out.kind = Advance::kRestart;
-  return out;
+  return true;
 }
 
 // The reactive law's command; a singular Dh switches the action to convex pieces (robust
@@ -615,16 +642,16 @@ Executive::Advance Executive::command(Activity& a, const Pose& pose, double rho,
 }
 
 Executive::Advance Executive::start_back_out(Activity& a, const Pose& pose, const std::string& why,
-                                             double t, double dt) {
+                                             double t, double dt, bool contact) {
   Advance out;
   out.kind = Advance::kStuck;
   out.reason = why;
   if (!p_.robust.back_out) return out;
-  if (a.back_outs >= p_.robust.max_back_outs) {
+  if (!contact && a.back_outs >= p_.robust.max_back_outs) {
     out.reason += " (after " + std::to_string(a.back_outs) + " back-ups)";
     return out;
   }
-  ++a.back_outs;
+  if (!contact) ++a.back_outs;
   ++recoveries_.back_outs;
   a.backing = true;
   a.backing_travel = 0;
@@ -932,6 +959,39 @@ void Executive::enter_fix(const std::vector<std::string>& blocking, double t) {
     return;
   }
   for (auto it = exec.rbegin(); it != exec.rend(); ++it) fix_.push_back(std::move(*it));
+}
+
+// An action ended stuck. Paper §III-A: when the continuous controller fails at a sub-task, the
+// symbolic controller is asked for an alternative; so an LTL action that ended stuck (itself, or
+// in a Fix-mode action serving it) is reported infeasible to the mission controller, the Fix
+// stack is dropped, and the next action is the controller's alternative, if any. A stuck
+// interface-layer action with no LTL action behind it (a restore) ends the task stuck.
+void Executive::end_stuck(const std::string& reason, double t) {
+  Activity* a = current();
+  const std::string what = a->name() + ": " + reason;
+  if (!ltl_) {
+    end_current(ActionOutcome::kStuck, reason, t);
+    finish(TaskStatus::kStuck, what, t);
+    return;
+  }
+  log_.push_back(ActionRecord{a->name(), a->fix, ActionOutcome::kStuck, reason, a->t_start, t,
+                              a->interruptions, a->target});
+  if (a->fix) {
+    const std::string why = "gave up after " + what;
+    for (auto it = fix_.rbegin() + 1; it != fix_.rend(); ++it) {
+      log_.push_back(ActionRecord{it->name(), true, ActionOutcome::kAbandoned, why, it->t_start, t,
+                                  it->interruptions, it->target});
+    }
+    log_.push_back(ActionRecord{ltl_->name(), false, ActionOutcome::kStuck, why, ltl_->t_start, t,
+                                ltl_->interruptions, ltl_->target});
+  }
+  fix_.clear();
+  stuck_ = stuck_.empty() ? what : stuck_ + "; " + what;
+  {
+    const ScopedStopwatch sw(times_.mission_s);
+    mission_.report_infeasible(ltl_->ltl);
+  }
+  ltl_.reset();
 }
 
 void Executive::end_current(ActionOutcome outcome, const std::string& reason, double t) {

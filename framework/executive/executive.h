@@ -22,6 +22,9 @@
 //  - An LTL action whose target is separated from the robot by the visible fragments of unknown
 //    obstacles (which Appendix III does not consider: the paper's separation assumptions rule it
 //    out) is reported infeasible; fragments are subsets of the true obstacles, so this is sound.
+//  - An action that ends stuck (the progress monitor, after the robust variant's recoveries) is
+//    reported infeasible to the mission controller, which picks an alternative (paper §III-A);
+//    when none is left the task ends stuck, with every stuck action in the reason.
 //  - Fix mode is bounded: at most max_fix_rounds entries per LTL action and a stack of at most
 //    2 × (objects + 1) actions, after which the task ends stuck with the reason.
 //  - The robust variant (RobustParams, the default; experiments/sweeps/README.md "Variants"):
@@ -62,6 +65,12 @@ inline constexpr int kMaxDropRetargets = 8;
 // m by which a chosen drop point beats the drop rule, so that the early stop holds within this
 // distance of it (the law converges to x* only asymptotically near obstacles).
 inline constexpr double kDropSlack = 0.15;
+// m: when the progress monitor fires with the centre this close to the boundary of its mapped
+// freespace F_k, the robot backs out before a guide is planned. In discrete time the law of [7]
+// can bring the centre onto ∂F_k (the safety filter keeps it in the closed LF(y)); there, where
+// two convex pieces of a cluster meet, LF(y) shrinks to a wedge at y and every goal beyond it
+// projects onto y itself: the robot stands still whatever its goal.
+inline constexpr double kContactClearance = 0.02;
 
 struct RobustParams {
   // When the progress monitor fires, follow waypoints of a path in the known freespace
@@ -243,7 +252,9 @@ class Executive {
     double backing_travel = 0;  // m moved (arc length of the centre) in this back-up
     int backing_dir = -1;       // index into the back-up moves, -1: choose one
     bool convex_all = false;
-    int retargets = 0;  // drop points chosen again after a fragment took one
+    int contact_outs = 0;        // back-ups off ∂F_k when the monitor fired (kContactClearance)
+    bool guide_pending = false;  // plan a guide at the next rebuild (after such a back-up)
+    int retargets = 0;           // drop points chosen again after a fragment took one
     std::vector<Point> rejected_drops;
     std::string name() const;
   };
@@ -266,13 +277,20 @@ class Executive {
   Advance plan(Activity& a, const Pose& pose);
   Advance plan_grasp(Activity& a, const Pose& pose);
   Advance rebuild(Activity& a, double radius, const Point& center, double t);
-  Advance recover(Activity& a, const Point& center, const std::string& why, double t);
+  Advance recover(Activity& a, const Pose& pose, const Point& center, const std::string& why,
+                  double t, double dt);
   Advance back_out(Activity& a, const Pose& pose, double t, double dt);
-  Advance start_back_out(Activity& a, const Pose& pose, const std::string& why, double t,
-                         double dt);
+  // A back-up (back_out); `contact`: one of the monitor's back-ups off ∂F_k (kContactClearance,
+  // bounded by Activity::contact_outs), outside the budget of back-ups out of a dilation.
+  Advance start_back_out(Activity& a, const Pose& pose, const std::string& why, double t, double dt,
+                         bool contact = false);
+  // Plans a guide from `center` to x* in the current mapped space (robust variant); false when
+  // the guide budget is spent or no path helps (`note` says which).
+  bool plan_guide(Activity& a, const Point& center, double t, std::string& note);
   Advance command(Activity& a, const Pose& pose, double rho, double t, double dt);
   std::optional<Advance> arrive(Activity& a, const Point& center, double rho, double t);
   void end_current(ActionOutcome outcome, const std::string& reason, double t);
+  void end_stuck(const std::string& reason, double t);
   void enter_fix(const std::vector<std::string>& blocking, double t);
   void finish(TaskStatus status, const std::string& reason, double t);
   reactive::SemanticInput semantic_input() const;
@@ -310,6 +328,7 @@ class Executive {
   GripperAction gripper_ = GripperAction::kNone;
   std::string gripper_object_;
   std::vector<ActionRecord> log_;
+  std::string stuck_;  // the actions that ended stuck and were reported infeasible (paper §III-A)
   TaskStatus status_ = TaskStatus::kRunning;
   std::string reason_;
 };

@@ -194,14 +194,23 @@ std::optional<std::vector<int>> search(const Raster& g, int start, int goal, con
 }
 
 // Shortcuts the polyline: from each anchor, the farthest point reached by clear segments before
-// the first that is not (a narrow stretch keeps the raster's own steps).
-std::vector<Point> shortcut(const Region& r, const std::vector<Point>& line, double c) {
+// the first that is not (a narrow stretch keeps the raster's own steps). A segment must keep the
+// clearance of the raster path it replaces (the least clearance of its points, less one cell,
+// capped at `comfort`, never below `floor`): the A* search prefers cells `comfort` from ∂F_k,
+// and a shortcut that hugs a corner again would bring the law back to the corners where
+// clusters stop it.
+std::vector<Point> shortcut(const Region& r, const std::vector<Point>& line,
+                            const std::vector<double>& clear, double res, double floor,
+                            double comfort) {
   std::vector<Point> out;
   std::size_t anchor = 0;
   while (anchor + 1 < line.size()) {
     std::size_t next = anchor + 1;
+    double least = std::min(clear[anchor], clear[anchor + 1]);
     for (std::size_t k = anchor + 2; k < line.size(); ++k) {
-      if (!segment_clear(r, line[anchor], line[k], c)) break;
+      least = std::min(least, clear[k]);
+      const double need = std::clamp(least - res, floor, std::max(floor, comfort));
+      if (!segment_clear(r, line[anchor], line[k], need)) break;
       next = k;
     }
     out.push_back(line[next]);
@@ -228,6 +237,13 @@ double segment_distance(const Point& a, const Point& b, const Point& c, const Po
 }
 
 }  // namespace
+
+double boundary_distance(const Region& r, const Point& x) {
+  if (!geometry::contains(r, x)) return 0;
+  double d = geometry::nearest_on_boundary(r.outer, x).distance;
+  for (const Polygon& h : r.holes) d = std::min(d, geometry::nearest_on_boundary(h, x).distance);
+  return d;
+}
 
 void validate(const GuideParams& p) {
   const std::pair<const char*, double> positive[] = {{"resolution", p.resolution},
@@ -304,9 +320,14 @@ std::optional<std::vector<Point>> guide_path(const Region& free, const Point& fr
   const std::optional<std::vector<int>> cells = search(g, *s, *t, p);
   if (!cells) return std::nullopt;
   std::vector<Point> line{from};
-  for (int c : *cells) line.push_back(g.center(c % g.nx, c / g.nx));
+  std::vector<double> clear{boundary_distance(free, from)};
+  for (int c : *cells) {
+    line.push_back(g.center(c % g.nx, c / g.nx));
+    clear.push_back(g.clear[c]);
+  }
   line.push_back(to);
-  return shortcut(free, line, p.clearance);
+  clear.push_back(boundary_distance(free, to));
+  return shortcut(free, line, clear, g.res, p.clearance, p.comfort);
 }
 
 }  // namespace rearm::executive

@@ -131,6 +131,31 @@ TEST(Executive, GripperFailureEndsStuck) {
   EXPECT_NE(r.reason.find("did not close on M1"), std::string::npos) << r.reason;
 }
 
+// Paper §III-A: an action the controller cannot complete is reported, and the mission
+// controller's alternative runs. With the gripper broken, grasp(M1) ends stuck and the other
+// disjunct, move(l2), completes the task; with no alternative the task ends stuck with every
+// stuck action named.
+TEST(Executive, AStuckActionIsReportedAndTheAlternativeRuns) {
+  TaskSpec t = open_room("<>(grasp(M1) || move(l2))");
+  BrokenGripper plant(KinematicPlant(t.world, 0.2, kStart));
+  const TaskResult r = run_task(t, plant);
+  ASSERT_EQ(r.status, TaskStatus::kCompleted) << r.reason;
+  ASSERT_EQ(r.actions.size(), 2u);
+  EXPECT_EQ(r.actions[0].action, "grasp(M1)");
+  EXPECT_EQ(r.actions[0].outcome, ActionOutcome::kStuck);
+  EXPECT_EQ(r.actions[1].action, "move(l2)");
+  EXPECT_EQ(r.actions[1].outcome, ActionOutcome::kSucceeded);
+  EXPECT_TRUE(inside(t, "l2", plant.pose().x));
+
+  TaskSpec both = open_room("<>grasp(M1) && <>grasp(M2)");
+  both.world.movable.push_back({"M2", geometry::Disk{Point(3, 1.5), 0.25}});
+  BrokenGripper plant2(KinematicPlant(both.world, 0.2, kStart));
+  const TaskResult r2 = run_task(both, plant2);
+  EXPECT_EQ(r2.status, TaskStatus::kStuck);
+  EXPECT_NE(r2.reason.find("did not close on M"), std::string::npos) << r2.reason;
+  EXPECT_NE(r2.reason.find("no alternative action"), std::string::npos) << r2.reason;
+}
+
 TEST(Executive, ReleaseWithoutTheObjectGraspsItFirst) {
   TaskSpec t = open_room("<>release(M1,l2)");
   KinematicPlant plant(t.world, 0.2, kStart);

@@ -55,6 +55,25 @@ TEST(GuidePath, GoesAroundAWallNearTheShortestLength) {
   EXPECT_GE(path->size(), 3u);  // at least the two corners before x*
 }
 
+// Shortcuts keep the raster path's clearance (up to GuideParams::comfort): around the wall's
+// corners the legs stay at least comfort less two cells from it, where a taut string would
+// graze the corners.
+TEST(GuidePath, ShortcutsKeepTheirDistanceFromCorners) {
+  const Polygon wall = box(4, 1, 6, 9);
+  const Region r{box(0, 0, 10, 10), {wall}};
+  const Region wall_only{box(-1, -1, 11, 11), {wall}};
+  const GuideParams p;
+  const Point from(2, 5), to(8, 5);
+  const auto path = guide_path(r, from, to, p);
+  ASSERT_TRUE(path.has_value());
+  Point a = from;
+  for (const Point& b : *path) {
+    EXPECT_TRUE(segment_clear(wall_only, a, b, p.comfort - 2 * p.resolution))
+        << "leg to (" << b.x() << ", " << b.y() << ")";
+    a = b;
+  }
+}
+
 TEST(GuidePath, ThreadsANarrowPassageWhenItIsTheOnlyWay) {
   // Two walls from the outer boundary's bottom and top leave a gap 0.12 m wide at y = 5.
   const Polygon outer{{Point(0, 0), Point(4, 0), Point(4, 4.94), Point(6, 4.94), Point(6, 0),
