@@ -127,6 +127,73 @@ bool plan_invalidated(const std::vector<PlanExecutor::Sweep>& rest, const DiskWo
 }
 
 // The replanning variant (see the header).
+// Continues the held object's interrupted transfer with one transfer query from the pair's
+// centre, appending the move to `plan` and advancing `sub`; false, with the record's status
+// set, when it cannot be continued.
+bool continue_transfer(const RearrangementProblem& full, std::size_t i, const ObjectMove& move,
+                       const sim::Pose& pose, double budget, std::uint64_t seed,
+                       const BaselineOptions& o, RearrangementProblem& sub, Plan& plan,
+                       BaselineRecord& r) {
+  QueryContext ctx(budget, seed, o.query_limit == 0 ? 0 : std::max(1L, o.query_limit - r.queries));
+  ctx.iterations_per_query = o.iterations_per_query;
+  const MovePlanner mp(sub, o.params);
+  const double ell = pair_offset(sub.object_radii[i], o.params);
+  const Point p0 = pose.x + ell * heading_vector(pose.psi);
+  const auto& region = full.goal_regions[i];
+  const bool to_goal = region && geometry::contains(*region, move.to);
+  MoveOutcome c =
+      mp.transfer(sub.start, i, p0, pose.psi, move.to, to_goal ? region : std::nullopt, ctx);
+  r.planning_time_s += ctx.elapsed();
+  r.subqueries += ctx.subqueries;
+  r.queries += ctx.queries;
+  r.nodes += ctx.nodes;
+  if (!c.move) {
+    // A spent query budget is the deterministic limit (unsolved), not the wall clock.
+    const bool clock = c.failure == MoveFailure::kTimeout && !ctx.out_of_queries();
+    r.status = clock ? "timeout" : "unsolved";
+    r.reason =
+        std::string("replan: the held object's transfer cannot be continued: ") +
+        (ctx.out_of_queries() ? "query limit of " + std::to_string(o.query_limit) + " reached"
+                              : std::string(to_string(c.failure)));
+    return false;
+  }
+  c.move->held_at_start = true;
+  plan.moves.push_back(*c.move);
+  sub.start[i] = c.move->to;
+  sub.robot_start = c.robot_after;
+  return true;
+}
+
+// Executes `plan`, checking its rest against what the sensor has revealed at every map change;
+// true when a new obstacle invalidated it in a transit or a transfer (a dock or back-off runs to
+// its end, at most a few cm), which is then interrupted (`current_move`: the move it was in).
+bool execute_until_invalidated(PlanExecutor& exec, sim::SimWorld& world,
+                               perception::SemanticMap& map, const geometry::Polygon& workspace,
+                               const Plan& plan, std::optional<ObjectMove>& current_move) {
+  exec.load(plan);
+  bool pending = false;
+  while (exec.tick()) {
+    const bool changed = map.update(world.pose().x);
+    if (!changed && !pending) continue;
+    const auto rest = exec.remaining();
+    if (rest.empty() || !plan_invalidated(rest, DiskWorld(workspace, known_obstacles(map)))) {
+      pending = false;
+      continue;
+    }
+    const auto kind = rest.front().kind;
+    if (kind == PlanExecutor::SweepKind::kTransit || kind == PlanExecutor::SweepKind::kTransfer ||
+        kind == PlanExecutor::SweepKind::kFinalTransit) {
+      const std::size_t mi = exec.move_index();
+      current_move =
+          mi < plan.moves.size() ? std::optional<ObjectMove>(plan.moves[mi]) : std::nullopt;
+      exec.interrupt();
+      return true;
+    }
+    pending = true;
+  }
+  return false;
+}
+
 void run_replanning(const scenario::Scenario& s, const RearrangementProblem& full,
                     const BaselineOptions& o, BaselineRecord& r) {
   sim::SimWorld world(s, sim::config_for(s));
@@ -157,37 +224,10 @@ void run_replanning(const scenario::Scenario& s, const RearrangementProblem& ful
     const std::uint64_t seed = Rng::derive(o.seed, round).next();
     const RearrangementProblem here = sub;  // the problem as it stands (for the validator)
     Plan plan;
-    if (exec.held() && current_move) {
-      // Continue the interrupted transfer: one transfer query from the pair's centre.
-      const std::size_t i = *exec.held();
-      QueryContext ctx(budget, seed,
-                       o.query_limit == 0 ? 0 : std::max(1L, o.query_limit - r.queries));
-      ctx.iterations_per_query = o.iterations_per_query;
-      const MovePlanner mp(sub, o.params);
-      const double ell = pair_offset(sub.object_radii[i], o.params);
-      const Point p0 = pose.x + ell * heading_vector(pose.psi);
-      const auto& region = full.goal_regions[i];
-      const bool to_goal = region && geometry::contains(*region, current_move->to);
-      MoveOutcome c = mp.transfer(sub.start, i, p0, pose.psi, current_move->to,
-                                  to_goal ? region : std::nullopt, ctx);
-      r.planning_time_s += ctx.elapsed();
-      r.subqueries += ctx.subqueries;
-      r.queries += ctx.queries;
-      r.nodes += ctx.nodes;
-      if (!c.move) {
-        // A spent query budget is the deterministic limit (unsolved), not the wall clock.
-        const bool clock = c.failure == MoveFailure::kTimeout && !ctx.out_of_queries();
-        r.status = clock ? "timeout" : "unsolved";
-        r.reason =
-            std::string("replan: the held object's transfer cannot be continued: ") +
-            (ctx.out_of_queries() ? "query limit of " + std::to_string(o.query_limit) + " reached"
-                                  : std::string(to_string(c.failure)));
-        break;
-      }
-      c.move->held_at_start = true;
-      plan.moves.push_back(*c.move);
-      sub.start[i] = c.move->to;
-      sub.robot_start = c.robot_after;
+    if (exec.held() && current_move &&
+        !continue_transfer(full, *exec.held(), *current_move, pose, budget, seed, o, sub, plan,
+                           r)) {
+      break;
     }
     const double rest_budget = o.time_limit - r.planning_time_s;
     if (rest_budget <= 0) {
@@ -220,34 +260,7 @@ void run_replanning(const scenario::Scenario& s, const RearrangementProblem& ful
                  " violation(s); first: " + r.violations.front();
       break;
     }
-    exec.load(plan);
-    bool invalidated = false, pending = false;
-    while (exec.tick()) {
-      const bool changed = map.update(world.pose().x);
-      if (changed || pending) {
-        const std::vector<geometry::Polygon> known = known_obstacles(map);
-        // Check the rest of the plan against what is known now; interrupt only in a transit or
-        // a transfer (a dock or back-off runs to its end, at most a few cm).
-        const auto rest = exec.remaining();
-        if (!rest.empty() && plan_invalidated(rest, DiskWorld(full.workspace, known))) {
-          const auto kind = rest.front().kind;
-          if (kind == PlanExecutor::SweepKind::kTransit ||
-              kind == PlanExecutor::SweepKind::kTransfer ||
-              kind == PlanExecutor::SweepKind::kFinalTransit) {
-            const std::size_t mi = exec.move_index();
-            current_move =
-                mi < plan.moves.size() ? std::optional<ObjectMove>(plan.moves[mi]) : std::nullopt;
-            exec.interrupt();
-            invalidated = true;
-            break;
-          }
-          pending = true;
-        } else {
-          pending = false;
-        }
-      }
-    }
-    if (!invalidated) break;
+    if (!execute_until_invalidated(exec, world, map, full.workspace, plan, current_move)) break;
     ++r.replans;
   }
   r.execution = exec.finish();

@@ -284,129 +284,161 @@ Command Executive::step(const Pose& pose, double t, double dt) {
 }
 
 Executive::Advance Executive::advance(Activity& a, const Pose& pose, double t, double dt) {
-  Advance out;
-  const double r = p_.robot_radius;
   switch (a.phase) {
-    case Phase::kNavigate: {
-      // Gripper prerequisites (interface-layer steps, beyond the paper; see the header).
-      const std::optional<std::string> carried = map_.carried();
-      std::vector<Activity> before;  // execution order
-      if (a.kind == Kind::kGrasp && carried) {
-        if (*carried == a.object) {
-          out.kind = Advance::kDone;
-          out.reason = "already in the gripper";
-          return out;
-        }
-        before.push_back(make(Kind::kDisassemble, *carried, "", true, t));
-      } else if (a.kind == Kind::kRelease && carried != a.object) {
-        if (carried) before.push_back(make(Kind::kDisassemble, *carried, "", true, t));
-        before.push_back(make(Kind::kGrasp, a.object, "", true, t));
-      } else if (a.kind == Kind::kDisassemble && carried != a.object) {
-        out.kind = Advance::kInfeasible;
-        out.reason = "the object is not in the gripper";
-        return out;
-      }
-      if (!before.empty()) {
-        // `a` may live in fix_: nothing touches it after the push.
-        for (auto it = before.rbegin(); it != before.rend(); ++it) fix_.push_back(*it);
-        out.kind = Advance::kRestart;
-        return out;
-      }
-      return navigate(a, pose, t, dt);
-    }
-    case Phase::kAlign: {
-      const geometry::Disk m = *map_.object(a.object);
-      if (reactive::aligned(pose.psi, pose.x, m.center, p_.align_tolerance)) {
-        a.phase = Phase::kDock;
-        a.phase_start = t;
-        out.kind = Advance::kRestart;
-        return out;
-      }
-      if (t - a.phase_start > p_.phase_timeout) {
-        out.kind = Advance::kStuck;
-        out.reason =
-            "could not turn the gripper toward the object within " + fmt(p_.phase_timeout) + " s";
-        return out;
-      }
-      out.u = reactive::align_command(pose.psi, pose.x, m.center, p_.nav);
-      return out;
-    }
-    case Phase::kDock: {
-      const geometry::Disk m = *map_.object(a.object);
-      const double gap = (m.center - pose.x).norm() - r - m.radius;
-      if (gap <= p_.grasp.dock_gap) {
-        gripper_ = GripperAction::kClose;
-        gripper_object_ = a.object;
-        a.phase = Phase::kGrip;
-        a.phase_start = t;
-        a.note = "gripped at gap " + fmt(gap * 1000) + " mm";
-        return out;  // stand still while the gripper closes
-      }
-      if (t - a.phase_start > p_.phase_timeout) {
-        out.kind = Advance::kStuck;
-        out.reason = "could not dock to the object within " + fmt(p_.phase_timeout) + " s";
-        return out;
-      }
-      // Straight in, never closer than half the gap allowance in one step, steering to keep
-      // facing the centre.
-      out.u.v = std::min(p_.dock_speed, (gap - p_.grasp.dock_gap / 2) / dt);
-      out.u.omega = reactive::align_command(pose.psi, pose.x, m.center, p_.nav).omega;
-      return out;
-    }
+    case Phase::kNavigate:
+      return prerequisites_then_navigate(a, pose, t, dt);
+    case Phase::kAlign:
+      return align(a, pose, t);
+    case Phase::kDock:
+      return dock(a, pose, t, dt);
     case Phase::kGrip:
-      if (map_.carried() == a.object) {
-        out.kind = Advance::kDone;
-        out.reason = a.note;
-      } else {
-        out.kind = Advance::kStuck;
-        out.reason = "the gripper did not close on " + a.object;
-      }
-      return out;
+      return grip(a);
     case Phase::kOpen:
-      if (map_.carried()) {
-        // The robot stood still for one tick (so the object is at rest when it is let go);
-        // now the gripper opens, and the map must say so on the next tick.
-        if (!a.open_sent) {
-          gripper_ = GripperAction::kOpen;
-          a.open_sent = true;
-          return out;
-        }
-        out.kind = Advance::kStuck;
-        out.reason = "the gripper did not open";
-        return out;
-      }
-      a.phase = Phase::kBackOff;
-      a.phase_start = t;
-      out.kind = Advance::kRestart;
-      return out;
-    case Phase::kBackOff: {
-      const geometry::Disk m = *map_.object(a.object);
-      const double need =
-          geometry::disk_polygon_circumradius(m.radius + plan_radius() + geometry::kContactSlack) +
-          p_.backoff_margin;
-      const double d = (m.center - pose.x).norm();
-      if (d >= need) {
-        out.kind = Advance::kDone;
-        out.reason = a.note + "; released " + a.object + " at " + point_text(m.center);
-        return out;
-      }
-      if (t - a.phase_start > p_.phase_timeout) {
-        out.kind = Advance::kStuck;
-        out.reason = "could not back off from the released object";
-        return out;
-      }
-      out.u.v = -std::min(p_.backoff_speed, (need - d) / dt + 1e-3);
-      const Point next = reactive::unicycle_step(pose, out.u, dt).x;
-      if (known_clearance(map_, next) < r) {
-        out.kind = Advance::kStuck;
-        out.reason = "no room to back off from the released object at " + point_text(pose.x);
-        return out;
-      }
-      return out;
-    }
+      return open(a, t);
+    case Phase::kBackOff:
+      return back_off(a, pose, t, dt);
   }
+  Advance out;
   out.kind = Advance::kStuck;
   out.reason = "unknown phase";
+  return out;
+}
+
+// Gripper prerequisites (interface-layer steps, beyond the paper; see the header), then the
+// navigation phase.
+Executive::Advance Executive::prerequisites_then_navigate(Activity& a, const Pose& pose, double t,
+                                                          double dt) {
+  Advance out;
+  const std::optional<std::string> carried = map_.carried();
+  std::vector<Activity> before;  // execution order
+  if (a.kind == Kind::kGrasp && carried) {
+    if (*carried == a.object) {
+      out.kind = Advance::kDone;
+      out.reason = "already in the gripper";
+      return out;
+    }
+    before.push_back(make(Kind::kDisassemble, *carried, "", true, t));
+  } else if (a.kind == Kind::kRelease && carried != a.object) {
+    if (carried) before.push_back(make(Kind::kDisassemble, *carried, "", true, t));
+    before.push_back(make(Kind::kGrasp, a.object, "", true, t));
+  } else if (a.kind == Kind::kDisassemble && carried != a.object) {
+    out.kind = Advance::kInfeasible;
+    out.reason = "the object is not in the gripper";
+    return out;
+  }
+  if (!before.empty()) {
+    // `a` may live in fix_: nothing touches it after the push.
+    for (auto it = before.rbegin(); it != before.rend(); ++it) fix_.push_back(*it);
+    out.kind = Advance::kRestart;
+    return out;
+  }
+  return navigate(a, pose, t, dt);
+}
+
+// GRASP: turn in place until the gripper faces the object (paper §V-B).
+Executive::Advance Executive::align(Activity& a, const Pose& pose, double t) {
+  Advance out;
+  const geometry::Disk m = *map_.object(a.object);
+  if (reactive::aligned(pose.psi, pose.x, m.center, p_.align_tolerance)) {
+    a.phase = Phase::kDock;
+    a.phase_start = t;
+    out.kind = Advance::kRestart;
+    return out;
+  }
+  if (t - a.phase_start > p_.phase_timeout) {
+    out.kind = Advance::kStuck;
+    out.reason =
+        "could not turn the gripper toward the object within " + fmt(p_.phase_timeout) + " s";
+    return out;
+  }
+  out.u = reactive::align_command(pose.psi, pose.x, m.center, p_.nav);
+  return out;
+}
+
+// GRASP: drive straight in to dock_gap from contact, then close the gripper.
+Executive::Advance Executive::dock(Activity& a, const Pose& pose, double t, double dt) {
+  Advance out;
+  const geometry::Disk m = *map_.object(a.object);
+  const double gap = (m.center - pose.x).norm() - p_.robot_radius - m.radius;
+  if (gap <= p_.grasp.dock_gap) {
+    gripper_ = GripperAction::kClose;
+    gripper_object_ = a.object;
+    a.phase = Phase::kGrip;
+    a.phase_start = t;
+    a.note = "gripped at gap " + fmt(gap * 1000) + " mm";
+    return out;  // stand still while the gripper closes
+  }
+  if (t - a.phase_start > p_.phase_timeout) {
+    out.kind = Advance::kStuck;
+    out.reason = "could not dock to the object within " + fmt(p_.phase_timeout) + " s";
+    return out;
+  }
+  // Straight in, never closer than half the gap allowance in one step, steering to keep
+  // facing the centre.
+  out.u.v = std::min(p_.dock_speed, (gap - p_.grasp.dock_gap / 2) / dt);
+  out.u.omega = reactive::align_command(pose.psi, pose.x, m.center, p_.nav).omega;
+  return out;
+}
+
+// GRASP: the tick after the close command, the map must report the object carried.
+Executive::Advance Executive::grip(const Activity& a) const {
+  Advance out;
+  if (map_.carried() == a.object) {
+    out.kind = Advance::kDone;
+    out.reason = a.note;
+  } else {
+    out.kind = Advance::kStuck;
+    out.reason = "the gripper did not close on " + a.object;
+  }
+  return out;
+}
+
+// RELEASE, DISASSEMBLE: the robot stood still for one tick (so the object is at rest when it is
+// let go); now the gripper opens, and the map must say so on the next tick.
+Executive::Advance Executive::open(Activity& a, double t) {
+  Advance out;
+  if (map_.carried()) {
+    if (!a.open_sent) {
+      gripper_ = GripperAction::kOpen;
+      a.open_sent = true;
+      return out;
+    }
+    out.kind = Advance::kStuck;
+    out.reason = "the gripper did not open";
+    return out;
+  }
+  a.phase = Phase::kBackOff;
+  a.phase_start = t;
+  out.kind = Advance::kRestart;
+  return out;
+}
+
+// RELEASE, DISASSEMBLE: back off straight until the robot is clear of the released object's
+// dilation, so the next action starts in the freespace.
+Executive::Advance Executive::back_off(Activity& a, const Pose& pose, double t, double dt) {
+  Advance out;
+  const geometry::Disk m = *map_.object(a.object);
+  const double need =
+      geometry::disk_polygon_circumradius(m.radius + plan_radius() + geometry::kContactSlack) +
+      p_.backoff_margin;
+  const double d = (m.center - pose.x).norm();
+  if (d >= need) {
+    out.kind = Advance::kDone;
+    out.reason = a.note + "; released " + a.object + " at " + point_text(m.center);
+    return out;
+  }
+  if (t - a.phase_start > p_.phase_timeout) {
+    out.kind = Advance::kStuck;
+    out.reason = "could not back off from the released object";
+    return out;
+  }
+  out.u.v = -std::min(p_.backoff_speed, (need - d) / dt + 1e-3);
+  const Point next = reactive::unicycle_step(pose, out.u, dt).x;
+  if (known_clearance(map_, next) < p_.robot_radius) {
+    out.kind = Advance::kStuck;
+    out.reason = "no room to back off from the released object at " + point_text(pose.x);
+    return out;
+  }
   return out;
 }
 
@@ -584,7 +616,8 @@ Executive::Advance Executive::recover(Activity& a, const Pose& pose, const Point
   out.reason = why;
   if (!p_.robust.guide) return out;
   if (p_.robust.back_out && a.contact_outs < p_.robust.max_back_outs &&
-      boundary_distance(controller_.mapped().freespace, center) < kContactClearance) {
+      geometry::nearest_on_boundary(controller_.mapped().freespace, center).distance <
+          kContactClearance) {
     // Pressed onto ∂F_k (kContactClearance): back out first, then follow a guide planned from
     // where the back-up ends (the next rebuild).
     ++a.contact_outs;
@@ -978,20 +1011,25 @@ void Executive::end_stuck(const std::string& reason, double t) {
                               a->interruptions, a->target});
   if (a->fix) {
     const std::string why = "gave up after " + what;
-    for (auto it = fix_.rbegin() + 1; it != fix_.rend(); ++it) {
-      log_.push_back(ActionRecord{it->name(), true, ActionOutcome::kAbandoned, why, it->t_start, t,
-                                  it->interruptions, it->target});
-    }
+    fix_.pop_back();
+    abandon_fix(why, t);
     log_.push_back(ActionRecord{ltl_->name(), false, ActionOutcome::kStuck, why, ltl_->t_start, t,
                                 ltl_->interruptions, ltl_->target});
   }
-  fix_.clear();
   stuck_ = stuck_.empty() ? what : stuck_ + "; " + what;
   {
     const ScopedStopwatch sw(times_.mission_s);
     mission_.report_infeasible(ltl_->ltl);
   }
   ltl_.reset();
+}
+
+void Executive::abandon_fix(const std::string& why, double t) {
+  for (auto it = fix_.rbegin(); it != fix_.rend(); ++it) {
+    log_.push_back(ActionRecord{it->name(), true, ActionOutcome::kAbandoned, why, it->t_start, t,
+                                it->interruptions, it->target});
+  }
+  fix_.clear();
 }
 
 void Executive::end_current(ActionOutcome outcome, const std::string& reason, double t) {
@@ -1004,11 +1042,7 @@ void Executive::end_current(ActionOutcome outcome, const std::string& reason, do
     if (outcome == ActionOutcome::kInfeasible) {
       // The Fix mode cannot clear the way: the LTL action it served is infeasible.
       const std::string why = "Fix mode failed: " + reason;
-      for (auto it = fix_.rbegin(); it != fix_.rend(); ++it) {
-        log_.push_back(ActionRecord{it->name(), true, ActionOutcome::kAbandoned, why, it->t_start,
-                                    t, it->interruptions, it->target});
-      }
-      fix_.clear();
+      abandon_fix(why, t);
       if (ltl_) {
         log_.push_back(ActionRecord{ltl_->name(), false, ActionOutcome::kInfeasible, why,
                                     ltl_->t_start, t, ltl_->interruptions, ltl_->target});
@@ -1055,11 +1089,7 @@ void Executive::finish(TaskStatus status, const std::string& reason, double t) {
   status_ = status;
   reason_ = reason;
   const std::string why = "task ended: " + reason;
-  for (auto it = fix_.rbegin(); it != fix_.rend(); ++it) {
-    log_.push_back(ActionRecord{it->name(), true, ActionOutcome::kAbandoned, why, it->t_start, t,
-                                it->interruptions, it->target});
-  }
-  fix_.clear();
+  abandon_fix(why, t);
   if (ltl_) {
     log_.push_back(ActionRecord{ltl_->name(), false, ActionOutcome::kAbandoned, why, ltl_->t_start,
                                 t, ltl_->interruptions, ltl_->target});

@@ -273,6 +273,13 @@ class Executive {
   bool fetch_ltl(double t);
   bool restore_next(double t);
   Advance advance(Activity& a, const Pose& pose, double t, double dt);
+  // The phases of advance() (see the header comment).
+  Advance prerequisites_then_navigate(Activity& a, const Pose& pose, double t, double dt);
+  Advance align(Activity& a, const Pose& pose, double t);
+  Advance dock(Activity& a, const Pose& pose, double t, double dt);
+  Advance grip(const Activity& a) const;
+  Advance open(Activity& a, double t);
+  Advance back_off(Activity& a, const Pose& pose, double t, double dt);
   Advance navigate(Activity& a, const Pose& pose, double t, double dt);
   Advance plan(Activity& a, const Pose& pose);
   Advance plan_grasp(Activity& a, const Pose& pose);
@@ -291,6 +298,8 @@ class Executive {
   std::optional<Advance> arrive(Activity& a, const Point& center, double rho, double t);
   void end_current(ActionOutcome outcome, const std::string& reason, double t);
   void end_stuck(const std::string& reason, double t);
+  // Logs every action on the Fix stack as abandoned (top first) and empties it.
+  void abandon_fix(const std::string& why, double t);
   void enter_fix(const std::vector<std::string>& blocking, double t);
   void finish(TaskStatus status, const std::string& reason, double t);
   reactive::SemanticInput semantic_input() const;

@@ -219,6 +219,11 @@ std::vector<Point> shortcut(const Region& r, const std::vector<Point>& line,
   return out;
 }
 
+// Clearance of an endpoint of the path (0 outside `r`: then no shortcut from it keeps any).
+double endpoint_clearance(const Region& r, const Point& x) {
+  return geometry::contains(r, x) ? geometry::nearest_on_boundary(r, x).distance : 0;
+}
+
 double cross(const Point& a, const Point& b) { return a.x() * b.y() - a.y() * b.x(); }
 
 bool segments_cross(const Point& a, const Point& b, const Point& c, const Point& d) {
@@ -237,13 +242,6 @@ double segment_distance(const Point& a, const Point& b, const Point& c, const Po
 }
 
 }  // namespace
-
-double boundary_distance(const Region& r, const Point& x) {
-  if (!geometry::contains(r, x)) return 0;
-  double d = geometry::nearest_on_boundary(r.outer, x).distance;
-  for (const Polygon& h : r.holes) d = std::min(d, geometry::nearest_on_boundary(h, x).distance);
-  return d;
-}
 
 void validate(const GuideParams& p) {
   const std::pair<const char*, double> positive[] = {{"resolution", p.resolution},
@@ -320,13 +318,13 @@ std::optional<std::vector<Point>> guide_path(const Region& free, const Point& fr
   const std::optional<std::vector<int>> cells = search(g, *s, *t, p);
   if (!cells) return std::nullopt;
   std::vector<Point> line{from};
-  std::vector<double> clear{boundary_distance(free, from)};
+  std::vector<double> clear{endpoint_clearance(free, from)};
   for (int c : *cells) {
     line.push_back(g.center(c % g.nx, c / g.nx));
     clear.push_back(g.clear[c]);
   }
   line.push_back(to);
-  clear.push_back(boundary_distance(free, to));
+  clear.push_back(endpoint_clearance(free, to));
   return shortcut(free, line, clear, g.res, p.clearance, p.comfort);
 }
 

@@ -53,10 +53,6 @@ std::optional<geometry::Point> nearest_clear_point(
     const geometry::Region& free, const geometry::Point& from, double clearance,
     const std::function<bool(const geometry::Point&)>& accept, const GuideParams& p);
 
-// Distance (m) from x to the boundary of `r`; 0 when x is not in r (doubles: it steers
-// recoveries, never decides safety).
-double boundary_distance(const geometry::Region& r, const geometry::Point& x);
-
 // Is the closed segment [a, b] inside `free`, at distance >= c from its boundary (doubles; the
 // decision only steers the guide, never the safety of a motion)?
 bool segment_clear(const geometry::Region& free, const geometry::Point& a, const geometry::Point& b,

@@ -42,6 +42,15 @@ Nearest nearest_on_boundary(const Polygon& p, const Point& x) {
   return best;
 }
 
+Nearest nearest_on_boundary(const Region& r, const Point& x) {
+  Nearest best = nearest_on_boundary(r.outer, x);
+  for (const Polygon& h : r.holes) {
+    const Nearest n = nearest_on_boundary(h, x);
+    if (n.distance < best.distance) best = n;
+  }
+  return best;
+}
+
 double distance(const Polygon& p, const Point& x) {
   check_finite(x, "distance");
   if (contains(p, x)) return 0;

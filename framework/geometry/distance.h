@@ -17,6 +17,8 @@ struct Nearest {
 
 // Nearest point of the polygon's boundary to x.
 Nearest nearest_on_boundary(const Polygon& p, const Point& x);
+// Nearest point of the region's boundary (outer ring and holes) to x.
+Nearest nearest_on_boundary(const Region& r, const Point& x);
 // Distance from x to the closed polygon: 0 inside, else the boundary distance.
 double distance(const Polygon& p, const Point& x);
 // Signed distance from x to the polygon's boundary: negative inside (the boundary counts as

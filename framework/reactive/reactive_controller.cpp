@@ -20,11 +20,7 @@ constexpr double kGoalNudge = 1e-9;
 constexpr double kHeadingGuardSlack = 0.02;
 
 std::optional<Point> snap_goal(const MappedSpace& m, const Point& goal) {
-  geometry::Nearest best = geometry::nearest_on_boundary(m.freespace.outer, goal);
-  for (const Polygon& h : m.freespace.holes) {
-    const geometry::Nearest n = geometry::nearest_on_boundary(h, goal);
-    if (n.distance < best.distance) best = n;
-  }
+  const geometry::Nearest best = geometry::nearest_on_boundary(m.freespace, goal);
   if (best.distance > kGoalSnap) return std::nullopt;
   const Point away = best.distance > 0 ? Point((best.point - goal) / best.distance) : Point::Zero();
   for (const Point& q : {Point(best.point + kGoalNudge * away), best.point}) {

@@ -71,108 +71,118 @@ Polygon grown(const Polygon& p, double d) {
 
 // Step 4: the stack B_M. `c` is the component of bound − ∪fixed holding x and x*; `root` the
 // index of F in `components`.
-std::vector<std::size_t> blocking_stack(const TopologyInput& in, const RegionSet& components,
-                                        std::size_t root, const Region& c, double slack,
-                                        std::string& note) {
-  const std::size_t n_free = components.size();
-  // The clusters: components of the union of the (slightly grown) objects, clipped to C
-  // (localized: freespace.h).
-  std::vector<Polygon> grown_objects;
-  grown_objects.reserve(in.movable.size());
-  for (const Polygon& p : in.movable) grown_objects.push_back(grown(p, slack));
-  const detail::Clusters clusters = detail::clip_union(grown_objects, c);
-  const std::size_t n_clusters = clusters.regions.size();
+// Objects sorted farthest from x first, ties by index (pushed in this order, nearest on top).
+std::vector<std::size_t> farthest_first(std::vector<std::pair<double, std::size_t>> order) {
+  std::sort(order.begin(), order.end(), [](const auto& a, const auto& b) {
+    return a.first != b.first ? a.first > b.first : a.second > b.second;
+  });
+  std::vector<std::size_t> out;
+  out.reserve(order.size());
+  for (const auto& [dist, k] : order) out.push_back(k);
+  return out;
+}
 
-  std::vector<Region> vertices(components.begin(), components.end());
-  vertices.insert(vertices.end(), clusters.regions.begin(), clusters.regions.end());
+// The vertices of Appendix III's tree: the freespace components, then the object clusters.
+struct TreeVertices {
+  std::vector<Region> regions;
   std::vector<Box> boxes;
-  boxes.reserve(vertices.size());
-  for (const Region& r : vertices) boxes.push_back(box_of(r.outer));
+  std::size_t n_free = 0;
+};
 
-  // Objects of each cluster, farthest from x first (pushed in this order, nearest on top). Only
-  // the candidates can touch a cluster (the others' boxes miss it); a cluster that is one
-  // isolated grown object touches its own object only.
-  std::vector<std::vector<std::size_t>> members(n_clusters);
-  for (std::size_t j = 0; j < n_clusters; ++j) {
+// Objects of each cluster, farthest from x first. Only the candidates can touch a cluster (the
+// others' boxes miss it); a cluster that is one isolated grown object touches its own object only.
+std::vector<std::vector<std::size_t>> cluster_members(const TopologyInput& in,
+                                                      const detail::Clusters& clusters,
+                                                      const TreeVertices& t) {
+  std::vector<std::vector<std::size_t>> members(clusters.regions.size());
+  for (std::size_t j = 0; j < clusters.regions.size(); ++j) {
     std::vector<std::pair<double, std::size_t>> order;
     for (std::size_t k : clusters.candidates[j]) {
       const Region object{in.movable[k], {}};
       if (clusters.sole[j] ||
-          touch(object, box_of(in.movable[k]), vertices[n_free + j], boxes[n_free + j])) {
+          touch(object, box_of(in.movable[k]), t.regions[t.n_free + j], t.boxes[t.n_free + j])) {
         order.emplace_back(geometry::distance(in.movable[k], in.x), k);
       }
     }
-    std::sort(order.begin(), order.end(), [](const auto& a, const auto& b) {
-      return a.first != b.first ? a.first > b.first : a.second > b.second;
-    });
-    for (const auto& [dist, k] : order) members[j].push_back(k);
+    members[j] = farthest_first(std::move(order));
   }
+  return members;
+}
 
-  // The vertex holding x*: a freespace component, else a cluster (x* inside an object).
-  // Rounding can leave x* a hair outside every vertex; then the nearest one.
-  std::size_t goal = vertices.size();
-  for (std::size_t v = 0; v < vertices.size() && goal == vertices.size(); ++v) {
-    if (boxes[v].exteriorDistance(in.target) == 0 && geometry::contains(vertices[v], in.target)) {
+// The vertex holding x*: a freespace component, else a cluster (x* inside an object).
+// Rounding can leave x* a hair outside every vertex; then the nearest one.
+std::size_t goal_vertex(const TreeVertices& t, const Point& target) {
+  for (std::size_t v = 0; v < t.regions.size(); ++v) {
+    if (t.boxes[v].exteriorDistance(target) == 0 && geometry::contains(t.regions[v], target)) {
+      return v;
+    }
+  }
+  std::size_t goal = t.regions.size();
+  double best = std::numeric_limits<double>::infinity();
+  for (std::size_t v = 0; v < t.regions.size(); ++v) {
+    const double d = geometry::distance(t.regions[v].outer, target);
+    if (d < best) {
+      best = d;
       goal = v;
     }
   }
-  if (goal == vertices.size()) {
-    double best = std::numeric_limits<double>::infinity();
-    for (std::size_t v = 0; v < vertices.size(); ++v) {
-      const double d = geometry::distance(vertices[v].outer, in.target);
-      if (d < best) {
-        best = d;
-        goal = v;
-      }
-    }
-  }
+  return goal;
+}
 
-  // Edges. Freespace component – cluster: a vertex or an edge midpoint of the component's
-  // boundary lies in the (grown) cluster; a boundary stretch shared with an object always
-  // has one, at a rounding distance from the object, well inside the grown cluster. Cluster –
-  // cluster: pieces of one union touch only at shared (bit-identical) vertices. Two freespace
-  // components never share more than a point.
-  std::vector<std::vector<std::size_t>> adjacent(vertices.size());
+// Edges. Freespace component – cluster: a vertex or an edge midpoint of the component's
+// boundary lies in the (grown) cluster; a boundary stretch shared with an object always
+// has one, at a rounding distance from the object, well inside the grown cluster. Cluster –
+// cluster: pieces of one union touch only at shared (bit-identical) vertices. Two freespace
+// components never share more than a point.
+std::vector<std::vector<std::size_t>> adjacency(const TreeVertices& t) {
+  const std::size_t n = t.regions.size();
+  std::vector<std::vector<std::size_t>> adjacent(n);
   auto link = [&adjacent](std::size_t u, std::size_t v) {
     if (std::find(adjacent[u].begin(), adjacent[u].end(), v) == adjacent[u].end()) {
       adjacent[u].push_back(v);
       adjacent[v].push_back(u);
     }
   };
-  for (std::size_t i = 0; i < n_free; ++i) {
-    std::vector<bool> linked(vertices.size(), false);  // a linked pair needs no more probes
+  for (std::size_t i = 0; i < t.n_free; ++i) {
+    std::vector<bool> linked(n, false);  // a linked pair needs no more probes
     auto probe = [&](const Point& q) {
-      for (std::size_t v = n_free; v < vertices.size(); ++v) {
-        if (!linked[v] && boxes[v].exteriorDistance(q) == 0 && geometry::contains(vertices[v], q)) {
+      for (std::size_t v = t.n_free; v < n; ++v) {
+        if (!linked[v] && t.boxes[v].exteriorDistance(q) == 0 &&
+            geometry::contains(t.regions[v], q)) {
           link(i, v);
           linked[v] = true;
         }
       }
     };
     auto probe_loop = [&](const Polygon& loop) {
-      for (std::size_t k = 0, n = loop.size(); k < n; ++k) {
+      for (std::size_t k = 0, m = loop.size(); k < m; ++k) {
         probe(loop.vertices[k]);
-        probe((loop.vertices[k] + loop.vertices[(k + 1) % n]) / 2);
+        probe((loop.vertices[k] + loop.vertices[(k + 1) % m]) / 2);
       }
     };
-    probe_loop(vertices[i].outer);
-    for (const Polygon& h : vertices[i].holes) probe_loop(h);
+    probe_loop(t.regions[i].outer);
+    for (const Polygon& h : t.regions[i].holes) probe_loop(h);
   }
-  for (std::size_t u = n_free; u < vertices.size(); ++u) {
-    for (std::size_t v = u + 1; v < vertices.size(); ++v) {
-      if (!boxes[u].intersects(boxes[v])) continue;
-      const auto& ring = vertices[u].outer.vertices;
+  for (std::size_t u = t.n_free; u < n; ++u) {
+    for (std::size_t v = u + 1; v < n; ++v) {
+      if (!t.boxes[u].intersects(t.boxes[v])) continue;
+      const auto& ring = t.regions[u].outer.vertices;
       if (std::any_of(ring.begin(), ring.end(),
-                      [&](const Point& q) { return geometry::contains(vertices[v], q); })) {
+                      [&](const Point& q) { return geometry::contains(t.regions[v], q); })) {
         link(u, v);
       }
     }
   }
+  return adjacent;
+}
 
-  // Breadth-first search from F.
-  const std::size_t none = vertices.size();
-  std::vector<std::size_t> parent(vertices.size(), none);
-  std::vector<bool> seen(vertices.size(), false);
+// Breadth-first search from the root: each reached vertex's parent (the root and unreached
+// vertices: adjacent.size()); stops once `goal` is reached.
+std::vector<std::size_t> search_tree(const std::vector<std::vector<std::size_t>>& adjacent,
+                                     std::size_t root, std::size_t goal) {
+  const std::size_t none = adjacent.size();
+  std::vector<std::size_t> parent(adjacent.size(), none);
+  std::vector<bool> seen(adjacent.size(), false);
   std::deque<std::size_t> queue{root};
   seen[root] = true;
   while (!queue.empty() && !seen[goal]) {
@@ -186,12 +196,50 @@ std::vector<std::size_t> blocking_stack(const TopologyInput& in, const RegionSet
       }
     }
   }
+  return parent;
+}
+
+// An object met twice (it reaches into two clusters) keeps its position nearest the top.
+std::vector<std::size_t> unique_nearest_top(const std::vector<std::size_t>& pushed,
+                                            std::size_t objects) {
+  std::vector<std::size_t> stack;
+  std::vector<bool> taken(objects, false);
+  for (auto it = pushed.rbegin(); it != pushed.rend(); ++it) {
+    if (!taken[*it]) {
+      taken[*it] = true;
+      stack.push_back(*it);
+    }
+  }
+  std::reverse(stack.begin(), stack.end());
+  return stack;
+}
+
+std::vector<std::size_t> blocking_stack(const TopologyInput& in, const RegionSet& components,
+                                        std::size_t root, const Region& c, double slack,
+                                        std::string& note) {
+  // The clusters: components of the union of the (slightly grown) objects, clipped to C
+  // (localized: freespace.h).
+  std::vector<Polygon> grown_objects;
+  grown_objects.reserve(in.movable.size());
+  for (const Polygon& p : in.movable) grown_objects.push_back(grown(p, slack));
+  const detail::Clusters clusters = detail::clip_union(grown_objects, c);
+
+  TreeVertices t;
+  t.n_free = components.size();
+  t.regions.assign(components.begin(), components.end());
+  t.regions.insert(t.regions.end(), clusters.regions.begin(), clusters.regions.end());
+  t.boxes.reserve(t.regions.size());
+  for (const Region& r : t.regions) t.boxes.push_back(box_of(r.outer));
+
+  const std::vector<std::vector<std::size_t>> members = cluster_members(in, clusters, t);
+  const std::size_t goal = goal_vertex(t, in.target);
+  const std::vector<std::size_t> parent = search_tree(adjacency(t), root, goal);
 
   std::vector<std::size_t> pushed;
-  if (goal != root && seen[goal]) {
+  if (goal != root && parent[goal] != t.regions.size()) {
     for (std::size_t v = goal; v != root; v = parent[v]) {
-      if (v >= n_free) {
-        const auto& m = members[v - n_free];
+      if (v >= t.n_free) {
+        const auto& m = members[v - t.n_free];
         pushed.insert(pushed.end(), m.begin(), m.end());
       }
     }
@@ -203,22 +251,9 @@ std::vector<std::size_t> blocking_stack(const TopologyInput& in, const RegionSet
     for (const auto& m : members) {
       for (std::size_t k : m) order.emplace_back(geometry::distance(in.movable[k], in.x), k);
     }
-    std::sort(order.begin(), order.end(), [](const auto& a, const auto& b) {
-      return a.first != b.first ? a.first > b.first : a.second > b.second;
-    });
-    for (const auto& [dist, k] : order) pushed.push_back(k);
+    pushed = farthest_first(std::move(order));
   }
-  // An object met twice (it reaches into two clusters) keeps its position nearest the top.
-  std::vector<std::size_t> stack;
-  std::vector<bool> taken(in.movable.size(), false);
-  for (auto it = pushed.rbegin(); it != pushed.rend(); ++it) {
-    if (!taken[*it]) {
-      taken[*it] = true;
-      stack.push_back(*it);
-    }
-  }
-  std::reverse(stack.begin(), stack.end());
-  return stack;
+  return unique_nearest_top(pushed, in.movable.size());
 }
 
 }  // namespace

@@ -74,6 +74,18 @@ TEST(DistanceTest, SignedDistanceHandCases) {
   EXPECT_NEAR(signed_distance(sq, Point(-2, 0.6)), 2, 1e-15);
 }
 
+// A region's boundary is its outer ring and its holes: hand-computed nearest points.
+TEST(DistanceTest, RegionBoundaryIncludesTheHoles) {
+  const Region r{Polygon{{Point(0, 0), Point(10, 0), Point(10, 10), Point(0, 10)}},
+                 {Polygon{{Point(4, 4), Point(6, 4), Point(6, 6), Point(4, 6)}}}};
+  const Nearest near_hole = nearest_on_boundary(r, Point(3, 5));  // 1 m from the hole, 3 m out
+  EXPECT_DOUBLE_EQ(near_hole.distance, 1);
+  EXPECT_EQ(near_hole.point, Point(4, 5));
+  const Nearest near_outer = nearest_on_boundary(r, Point(0.5, 5));
+  EXPECT_DOUBLE_EQ(near_outer.distance, 0.5);
+  EXPECT_EQ(near_outer.point, Point(0, 5));
+}
+
 TEST(DistanceTest, NonFinitePointThrows) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   EXPECT_THROW(signed_distance(unit_square(), Point(nan, 0)), Error);
