@@ -12,6 +12,7 @@
 
 #include "core/error.h"
 #include "geometry/polygon.h"
+#include "support/task_scenes.h"
 
 namespace rearm::executive {
 namespace {
@@ -20,9 +21,7 @@ using geometry::Point;
 using geometry::Polygon;
 using geometry::Region;
 
-Polygon box(double x0, double y0, double x1, double y1) {
-  return Polygon{{Point(x0, y0), Point(x1, y0), Point(x1, y1), Point(x0, y1)}};
-}
+using test_support::rect;
 
 // Every sampled point of the polyline from → path is in the region; returns its length.
 double check_inside(const Region& r, const Point& from, const std::vector<Point>& path) {
@@ -42,7 +41,7 @@ double check_inside(const Region& r, const Point& from, const std::vector<Point>
 }
 
 TEST(GuidePath, GoesAroundAWallNearTheShortestLength) {
-  const Region r{box(0, 0, 10, 10), {box(4, 1, 6, 9)}};
+  const Region r{rect(0, 0, 10, 10), {rect(4, 1, 6, 9)}};
   const Point from(2, 5), to(8, 5);
   const auto path = guide_path(r, from, to, GuideParams{});
   ASSERT_TRUE(path.has_value());
@@ -59,9 +58,9 @@ TEST(GuidePath, GoesAroundAWallNearTheShortestLength) {
 // corners the legs stay at least comfort less two cells from it, where a taut string would
 // graze the corners.
 TEST(GuidePath, ShortcutsKeepTheirDistanceFromCorners) {
-  const Polygon wall = box(4, 1, 6, 9);
-  const Region r{box(0, 0, 10, 10), {wall}};
-  const Region wall_only{box(-1, -1, 11, 11), {wall}};
+  const Polygon wall = rect(4, 1, 6, 9);
+  const Region r{rect(0, 0, 10, 10), {wall}};
+  const Region wall_only{rect(-1, -1, 11, 11), {wall}};
   const GuideParams p;
   const Point from(2, 5), to(8, 5);
   const auto path = guide_path(r, from, to, p);
@@ -92,14 +91,14 @@ TEST(GuidePath, NoPathBetweenComponentsOrFromOutside) {
   // A closed room (the hole's ring) inside a ring-shaped region: the inside of the hole is not
   // in the region, and the region's two sides of a closed wall are one component, so use a
   // point inside the hole (outside the region) as the unreachable end.
-  const Region r{box(0, 0, 10, 10), {box(3, 3, 7, 7)}};
+  const Region r{rect(0, 0, 10, 10), {rect(3, 3, 7, 7)}};
   EXPECT_FALSE(guide_path(r, Point(1, 1), Point(5, 5), GuideParams{}).has_value());
   EXPECT_FALSE(guide_path(r, Point(5, 5), Point(1, 1), GuideParams{}).has_value());
   EXPECT_FALSE(guide_path(r, Point(-1, 1), Point(9, 9), GuideParams{}).has_value());
 }
 
 TEST(GuidePath, ASegmentInSightIsOneLeg) {
-  const Region r{box(0, 0, 10, 10), {box(4, 6, 6, 9)}};
+  const Region r{rect(0, 0, 10, 10), {rect(4, 6, 6, 9)}};
   const auto path = guide_path(r, Point(1, 2), Point(9, 2), GuideParams{});
   ASSERT_TRUE(path.has_value());
   ASSERT_EQ(path->size(), 1u);
@@ -107,7 +106,7 @@ TEST(GuidePath, ASegmentInSightIsOneLeg) {
 }
 
 TEST(GuidePath, SegmentClearMeasuresTheDistanceToTheBoundary) {
-  const Region r{box(0, 0, 10, 10), {box(4, 4, 6, 6)}};
+  const Region r{rect(0, 0, 10, 10), {rect(4, 4, 6, 6)}};
   // The segment y = 3.9 passes 0.1 m below the hole.
   EXPECT_TRUE(segment_clear(r, Point(1, 3.9), Point(9, 3.9), 0.09));
   EXPECT_FALSE(segment_clear(r, Point(1, 3.9), Point(9, 3.9), 0.11));
@@ -115,7 +114,7 @@ TEST(GuidePath, SegmentClearMeasuresTheDistanceToTheBoundary) {
 }
 
 TEST(GuidePath, RejectsBadParametersAndPoints) {
-  const Region r{box(0, 0, 10, 10), {}};
+  const Region r{rect(0, 0, 10, 10), {}};
   GuideParams p;
   p.resolution = -1;
   EXPECT_THROW(guide_path(r, Point(1, 1), Point(2, 2), p), Error);

@@ -14,6 +14,7 @@
 #include "geometry/convex.h"
 #include "geometry/polygon.h"
 #include "scenario/scenario.h"
+#include "support/task_scenes.h"
 
 namespace rearm::experiment {
 namespace {
@@ -21,17 +22,15 @@ namespace {
 using geometry::Point;
 using geometry::Polygon;
 
-Polygon box(double x0, double y0, double x1, double y1) {
-  return Polygon{{Point(x0, y0), Point(x1, y0), Point(x1, y1), Point(x0, y1)}};
-}
+using test_support::rect;
 
 scenario::Scenario saddle_scene(const char* variant) {
   scenario::Scenario s;
   s.name = std::string("saddle_") + variant;
-  s.workspace = box(0, 0, 12, 10);
+  s.workspace = rect(0, 0, 12, 10);
   s.robot.start = Point(2, 5);
   s.robot.heading = 0;
-  s.regions.push_back({"l1", box(9.5, 4.5, 10.5, 5.5)});
+  s.regions.push_back({"l1", rect(9.5, 4.5, 10.5, 5.5)});
   // A 32-gon of radius 1.2 with a vertex on the line y = 5 on either side: symmetric about it.
   s.unknown.push_back({"C1", geometry::regular_polygon({Point(6, 5), 1.2}, 32, false)});
   s.task = "<>move(l1)";

@@ -14,6 +14,7 @@
 #include "reactive/mapped_space.h"
 #include "reactive/reactive_controller.h"
 #include "support/reactive_scenes.h"
+#include "support/task_scenes.h"
 
 namespace rearm::reactive {
 namespace {
@@ -21,9 +22,7 @@ namespace {
 constexpr double kRadius = 0.2;
 const double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-Polygon box(double x0, double y0, double x1, double y1) {
-  return Polygon{{Point(x0, y0), Point(x1, y0), Point(x1, y1), Point(x0, y1)}};
-}
+using test_support::rect;
 
 Polygon l_shape() {
   return Polygon{{Point(4, 4), Point(8, 4), Point(8, 5), Point(5, 5), Point(5, 9), Point(4, 9)}};
@@ -31,7 +30,7 @@ Polygon l_shape() {
 
 SemanticInput room() {
   SemanticInput in;
-  in.workspace = box(0, 0, 20, 20);
+  in.workspace = rect(0, 0, 20, 20);
   return in;
 }
 
@@ -96,13 +95,13 @@ TEST(DegenerateInput, SliversAndNearlyFlatCornersStaySound) {
 
 TEST(DegenerateInput, TouchingAndOverlappingObstaclesAreConsolidated) {
   SemanticInput in = room();
-  in.familiar.push_back(box(4, 4, 6, 6));
-  in.familiar.push_back(box(6, 4, 8, 5));  // shares an edge with the first
-  in.familiar.push_back(box(8, 5, 9, 7));  // touches the second at a corner
-  in.familiar.push_back(l_shape());        // overlaps the first
-  in.familiar.push_back(box(12, 12, 14, 14));
-  in.familiar.push_back(box(14 + 2 * kRadius, 12, 16, 14));  // dilations touch exactly
-  in.unknown.push_back(box(15.5, 13.5, 16.5, 14.5));         // unknown overlapping a familiar
+  in.familiar.push_back(rect(4, 4, 6, 6));
+  in.familiar.push_back(rect(6, 4, 8, 5));  // shares an edge with the first
+  in.familiar.push_back(rect(8, 5, 9, 7));  // touches the second at a corner
+  in.familiar.push_back(l_shape());         // overlaps the first
+  in.familiar.push_back(rect(12, 12, 14, 14));
+  in.familiar.push_back(rect(14 + 2 * kRadius, 12, 16, 14));  // dilations touch exactly
+  in.unknown.push_back(rect(15.5, 13.5, 16.5, 14.5));         // unknown overlapping a familiar
   const MappedSpace m = build_mapped_space(in, kRadius, Point(1, 1));
   // Documented fallback: every overlapping or touching cluster is one purged component, the
   // unknown fragment that overlaps a familiar obstacle included.

@@ -18,6 +18,7 @@
 #include "scenario/scenario_io.h"
 #include "support/geometry_oracle.h"
 #include "support/scale.h"
+#include "support/task_scenes.h"
 
 namespace rearm::scenario {
 namespace {
@@ -25,18 +26,16 @@ namespace {
 using geometry::Point;
 using geometry::Polygon;
 
-Polygon box(double x0, double y0, double x1, double y1) {
-  return Polygon{{Point(x0, y0), Point(x1, y0), Point(x1, y1), Point(x0, y1)}};
-}
+using test_support::rect;
 
 // One object at (2, 5), its region around (8, 5), robot at (2, 2) in a 10 x 10 m room.
 Scenario room() {
   Scenario s;
   s.name = "room";
-  s.workspace = box(0, 0, 10, 10);
+  s.workspace = rect(0, 0, 10, 10);
   s.robot.start = Point(2, 2);
   s.objects.push_back(Object{"M1", geometry::Disk{Point(2, 5), 0.25}});
-  s.regions.push_back(NamedPolygon{"l1", box(7.5, 4.5, 8.5, 5.5)});
+  s.regions.push_back(NamedPolygon{"l1", rect(7.5, 4.5, 8.5, 5.5)});
   s.task = "<>release(M1,l1)";
   return s;
 }
@@ -56,7 +55,7 @@ TEST(Solvability, EmptyRoomIsSolvableWithAParkingSpot) {
 
 TEST(Solvability, AWallAcrossTheRoomDisconnects) {
   Scenario s = room();
-  s.familiar.push_back(NamedPolygon{"P1", box(4.9, 0, 5.1, 10)});
+  s.familiar.push_back(NamedPolygon{"P1", rect(4.9, 0, 5.1, 10)});
   const SolvabilityReport r = check_solvability(s);
   EXPECT_FALSE(r.solvable);
   EXPECT_FALSE(r.connected);
@@ -70,8 +69,8 @@ TEST(Solvability, APassageIsOpenExactlyWhenThePairFits) {
   for (const double gap : {pair_diameter - 0.02, pair_diameter + 0.02}) {
     Scenario s = room();
     const double y0 = 5 - gap / 2, y1 = 5 + gap / 2;
-    s.familiar.push_back(NamedPolygon{"P1", box(4.9, 0.0, 5.1, y0)});
-    s.familiar.push_back(NamedPolygon{"P2", box(4.9, y1, 5.1, 10.0)});
+    s.familiar.push_back(NamedPolygon{"P1", rect(4.9, 0.0, 5.1, y0)});
+    s.familiar.push_back(NamedPolygon{"P2", rect(4.9, y1, 5.1, 10.0)});
     const SolvabilityReport r = check_solvability(s);
     EXPECT_EQ(r.connected, gap > pair_diameter) << "gap " << gap << ": " << r.failure;
   }
@@ -81,10 +80,10 @@ TEST(Solvability, ARobotBoxedInIsReported) {
   Scenario s = room();
   s.robot.start = Point(8, 8.5);
   // A closed ring around the robot: four walls.
-  s.familiar.push_back(NamedPolygon{"P1", box(7, 7, 9, 7.2)});
-  s.familiar.push_back(NamedPolygon{"P2", box(7, 9.3, 9, 9.5)});
-  s.familiar.push_back(NamedPolygon{"P3", box(7, 7.2, 7.2, 9.3)});
-  s.familiar.push_back(NamedPolygon{"P4", box(8.8, 7.2, 9, 9.3)});
+  s.familiar.push_back(NamedPolygon{"P1", rect(7, 7, 9, 7.2)});
+  s.familiar.push_back(NamedPolygon{"P2", rect(7, 9.3, 9, 9.5)});
+  s.familiar.push_back(NamedPolygon{"P3", rect(7, 7.2, 7.2, 9.3)});
+  s.familiar.push_back(NamedPolygon{"P4", rect(8.8, 7.2, 9, 9.3)});
   const SolvabilityReport r = check_solvability(s);
   EXPECT_TRUE(r.connected);
   EXPECT_FALSE(r.robot_connected);
@@ -98,7 +97,7 @@ TEST(Solvability, SealTestOnAHandMadePocket) {
       "P1", Polygon{{Point(4.1, 4.1), Point(5.9, 4.1), Point(5.9, 6.1), Point(5.55, 6.1),
                      Point(5.55, 5.9), Point(5.7, 5.9), Point(5.7, 4.3), Point(4.3, 4.3),
                      Point(4.3, 5.9), Point(4.45, 5.9), Point(4.45, 6.1), Point(4.1, 6.1)}}});
-  s.regions[0].polygon = box(4.75, 4.85, 5.25, 5.35);
+  s.regions[0].polygon = rect(4.75, 4.85, 5.25, 5.35);
   s.objects.push_back(Object{"B1", geometry::Disk{Point(5, 6.1), 0.25}});
   validate(s);
   const SealReport closed = check_seal(s, 0, 1, Point(5, 5.1));
