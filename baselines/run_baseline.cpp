@@ -340,7 +340,7 @@ std::string baseline_metrics_json(const scenario::Scenario& s, const BaselineRec
   j.key("fix_mode_entries").value(0);
   j.key("recoveries").begin_object();  // rearm's robust variant only
   for (const char* k : {"guides", "back_outs", "singular_switches", "convex_fallbacks", "restores",
-                        "early_releases"}) {
+                        "early_releases", "withdrawals", "release_points", "early_docks"}) {
     j.key(k).value(0);
   }
   j.end_object();

@@ -103,10 +103,12 @@ int run_run(const std::vector<std::string>& args) {
   if (s.controller.variant == "robust") {
     std::printf(
         "  recoveries (%s variant): %d guide paths, %d back-ups, %d singular switches, "
-        "%d convex fallbacks, %d restores, %d early releases\n",
+        "%d convex fallbacks, %d restores, %d early releases, %d withdrawals, %d release "
+        "points, %d early docks\n",
         s.controller.variant.c_str(), t.recoveries.guides, t.recoveries.back_outs,
         t.recoveries.singular, t.recoveries.fallbacks, t.recoveries.restores,
-        t.recoveries.early_releases);
+        t.recoveries.early_releases, t.recoveries.withdrawals, t.recoveries.release_points,
+        t.recoveries.early_docks);
   }
   std::printf("wrote %s and %s\n", metrics.string().c_str(), trajectory.string().c_str());
 

@@ -3,7 +3,6 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <string>
 #include <utility>
 
@@ -67,6 +66,10 @@ void validate(const ExecutiveParams& p) {
   reactive::validate(p.nav);
   validate(p.progress);
   validate(p.guide);
+  if (!std::isfinite(p.robust.withdraw_clearance) || p.robust.withdraw_clearance < 0 ||
+      !std::isfinite(p.robust.withdraw_max) || p.robust.withdraw_max < 0) {
+    throw Error("executive: withdraw_clearance and withdraw_max must be finite and >= 0");
+  }
   if (!std::isfinite(p.robust.back_out_step) || !(p.robust.back_out_step > 0) ||
       p.robust.max_back_outs < 0 || !std::isfinite(p.robust.contact_margin) ||
       p.robust.contact_margin < 0 || p.robust.contact_margin > p.robot_radius) {
@@ -129,6 +132,12 @@ Executive::Executive(const ExecutiveParams& params, const std::vector<RegionOfIn
       controller_(params.diffeo, params.nav) {
   validate(p_);
   controller_.set_convex_fallback(p_.robust.convex_fallback);
+  controller_.set_miter_limit(miter_limit());
+  topology_cache_.set_miter_limit(miter_limit());
+}
+
+double Executive::miter_limit() const {
+  return p_.robust.bevel ? kBevelMiterLimit : geometry::kMiterLimit;
 }
 
 Executive::Activity Executive::make(Kind kind, std::string object, std::string region, bool fix,
@@ -292,7 +301,9 @@ Executive::Advance Executive::advance(Activity& a, const Pose& pose, double t, d
     case Phase::kDock:
       return dock(a, pose, t, dt);
     case Phase::kGrip:
-      return grip(a);
+      return grip(a, pose, t);
+    case Phase::kWithdraw:
+      return withdraw(a, pose, t, dt);
     case Phase::kOpen:
       return open(a, t);
     case Phase::kBackOff:
@@ -381,15 +392,82 @@ Executive::Advance Executive::dock(Activity& a, const Pose& pose, double t, doub
 }
 
 // GRASP: the tick after the close command, the map must report the object carried.
-Executive::Advance Executive::grip(const Activity& a) const {
+Executive::Advance Executive::grip(Activity& a, const Pose& pose, double t) {
   Advance out;
-  if (map_.carried() == a.object) {
-    out.kind = Advance::kDone;
-    out.reason = a.note;
-  } else {
+  if (map_.carried() != a.object) {
     out.kind = Advance::kStuck;
     out.reason = "the gripper did not close on " + a.object;
+    return out;
   }
+  if (p_.robust.withdraw) {
+    a.phase = Phase::kWithdraw;
+    a.phase_start = t;
+    a.withdrawn = 0;
+    a.withdraw_goal = withdraw_distance(a, pose);
+    out.kind = Advance::kRestart;
+    return out;
+  }
+  out.kind = Advance::kDone;
+  out.reason = a.note;
+  return out;
+}
+
+// GRASP, robust variant (RobustParams::withdraw): how far to reverse along the docking line.
+// The line is sampled every kWithdrawSample (m) up to withdraw_max, as long as the robot and the
+// gripped object stay clear of everything known: the first sample where the pair's centre is
+// withdraw_clearance clear of its dilated surroundings, else the sample where it is clearest
+// (0 when that is where it stands). A pocket's mouth narrows before it widens, so the clearance
+// is looked ahead along the line, not followed step by step.
+double Executive::withdraw_distance(const Activity& a, const Pose& pose) const {
+  constexpr double kWithdrawSample = 0.01;
+  const geometry::Disk m = *map_.object(a.object);
+  const double pair_radius = plan_radius() + m.radius + p_.grasp.pair_margin;
+  const Point back = -Point(std::cos(pose.psi), std::sin(pose.psi));
+  const Point xc = reactive::pair_center(pose.x, pose.psi, m.radius);
+  double best = known_clearance(map_, xc, a.object);
+  double best_s = 0;
+  const int samples = static_cast<int>(std::floor(p_.robust.withdraw_max / kWithdrawSample));
+  for (int k = 0; k <= samples; ++k) {
+    const double s = k * kWithdrawSample;
+    if (known_clearance(map_, pose.x + s * back, a.object) < plan_radius() ||
+        known_clearance(map_, m.center + s * back, a.object) <
+            m.radius + p_.robust.contact_margin) {
+      break;
+    }
+    const double c = known_clearance(map_, xc + s * back, a.object);
+    if (c >= pair_radius + p_.robust.withdraw_clearance) return s;
+    if (c > best) {
+      best = c;
+      best_s = s;
+    }
+  }
+  return best_s;
+}
+
+// GRASP, robust variant: reverse straight to withdraw_distance(), each step checked again
+// against the map (a fragment seen on the way ends it).
+Executive::Advance Executive::withdraw(Activity& a, const Pose& pose, double t, double dt) {
+  Advance out;
+  const geometry::Disk m = *map_.object(a.object);
+  auto done = [&](const std::string& how) {
+    if (a.withdrawn > 0) {
+      ++recoveries_.withdrawals;
+      a.note += "; withdrew " + fmt(a.withdrawn) + " m" + how;
+    }
+    out.kind = Advance::kDone;
+    out.reason = a.note;
+    return out;
+  };
+  if (a.withdrawn >= a.withdraw_goal || t - a.phase_start > p_.phase_timeout) return done("");
+  const double v = std::min(p_.backoff_speed, (a.withdraw_goal - a.withdrawn) / dt);
+  out.u.v = -v;
+  const Pose next = reactive::unicycle_step(pose, out.u, dt);
+  const Point moved = m.center + (next.x - pose.x);
+  if (known_clearance(map_, next.x, a.object) < plan_radius() ||
+      known_clearance(map_, moved, a.object) < m.radius + p_.robust.contact_margin) {
+    return done(" (blocked behind)");
+  }
+  a.withdrawn += v * dt;
   return out;
 }
 
@@ -443,7 +521,7 @@ Executive::Advance Executive::back_off(Activity& a, const Pose& pose, double t, 
 }
 
 Executive::Advance Executive::navigate(Activity& a, const Pose& pose, double t, double dt) {
-  const double r = plan_radius();
+  const double r = plan_radius(a);
   const std::optional<std::string> carried = map_.carried();
   const double rho = carried ? object_radius(*carried) : 0;
   const double radius = carried ? r + rho + p_.grasp.pair_margin : r;
@@ -612,6 +690,15 @@ Executive::Advance Executive::recover(Activity& a, const Pose& pose, const Point
       return out;  // stop for one tick, then open
     }
   }
+  if (a.kind == Kind::kGrasp && p_.robust.early_dock && early_dock(a, pose)) {
+    // Stopped beside the object short of the chosen approach point, with a clear docking line
+    // from here: the grasp proceeds from where the robot stands.
+    ++recoveries_.early_docks;
+    a.phase = Phase::kAlign;
+    a.phase_start = t;
+    out.kind = Advance::kRestart;
+    return out;
+  }
   out.kind = Advance::kStuck;
   out.reason = why;
   if (!p_.robust.guide) return out;
@@ -634,6 +721,19 @@ Executive::Advance Executive::recover(Activity& a, const Pose& pose, const Point
   }
   out.kind = Advance::kRestart;
   return out;
+}
+
+// Robust variant (RobustParams::early_dock): within kEarlyDockReach of the approach circle, and
+// the grasp from here passes grasp_candidates' checks with its pair centre in the exact pair
+// freespace.
+bool Executive::early_dock(const Activity& a, const Pose& pose) {
+  if (map_.carried()) return false;
+  const geometry::Disk m = *map_.object(a.object);
+  const double gap = (pose.x - m.center).norm() - m.radius - p_.robot_radius;
+  if (gap > p_.grasp.standoff + kEarlyDockReach) return false;
+  const std::optional<GraspCandidate> g =
+      grasp_from(map_, a.object, p_.robot_radius, pose.x, p_.grasp);
+  return g && geometry::contains(pair_freespace(a.object), g->pair_center);
 }
 
 bool Executive::plan_guide(Activity& a, const Point& center, double t, std::string& note) {
@@ -750,6 +850,21 @@ Executive::Advance Executive::back_out(Activity& a, const Pose& pose, double t, 
   return out;
 }
 
+// The exact freespace of the pair once `object` is gripped (the object carried, radius
+// r + contact margin + ρ_i + pair_margin): F_list of Appendix III.
+geometry::RegionSet Executive::pair_freespace(const std::string& object) {
+  const auto& ids = map_.movable_ids();
+  const auto it = std::find(ids.begin(), ids.end(), object);
+  if (it == ids.end()) throw Error("executive: " + object + " is not a movable obstacle now");
+  const std::size_t index = static_cast<std::size_t>(it - ids.begin());
+  const Point c = map_.movable()[index].center;
+  const ScopedStopwatch sw(times_.topology_s);
+  ++topology_checks_;
+  return freespace_of(topology::make_input(
+      map_.workspace(), map_.familiar(), map_.movable(),
+      plan_radius() + object_radius(object) + p_.grasp.pair_margin, c, c, index, topology_cache_));
+}
+
 double Executive::max_object_radius() const {
   double m = 0;
   for (const auto& o : map_.ground_truth().movable) m = std::max(m, o.disk.radius);
@@ -771,6 +886,10 @@ bool Executive::drop_clear(const Point& xc, double rho, double slack) const {
 }
 
 double Executive::plan_radius() const { return p_.robot_radius + p_.robust.contact_margin; }
+
+double Executive::plan_radius(const Activity& a) const {
+  return a.bare ? p_.robot_radius : plan_radius();
+}
 
 // Robust variant: the mission is accepting, but Fix mode moved objects that LTL actions had
 // placed (the formula's "eventually release" held when they were released, the task's end state
@@ -802,7 +921,7 @@ RecoveryCounts Executive::recoveries() const {
 Executive::Advance Executive::plan(Activity& a, const Pose& pose) {
   if (a.kind == Kind::kGrasp) return plan_grasp(a, pose);
   Advance out;
-  const double r = plan_radius();
+  const double r = plan_radius(a);
   const std::optional<std::string> carried = map_.carried();
   const double rho = carried ? object_radius(*carried) : 0;
   const double radius = carried ? r + rho + p_.grasp.pair_margin : r;
@@ -829,7 +948,8 @@ Executive::Advance Executive::plan(Activity& a, const Pose& pose) {
       geometry::Region where = res.freespace;
       try {
         const ScopedStopwatch sw(times_.rebuild_s);
-        where = reactive::build_mapped_space(semantic_input(), radius, center).freespace;
+        reactive::DilationCache dilations(miter_limit());
+        where = reactive::build_mapped_space(semantic_input(), radius, center, dilations).freespace;
       } catch (const reactive::NotInFreespace&) {
       }
       // Points near a drop point a fragment took before are skipped: fragments are what the
@@ -859,11 +979,31 @@ Executive::Advance Executive::plan(Activity& a, const Pose& pose) {
   const topology::TopologyResult res = timed_check(radius, center, target);
   ++topology_checks_;
   a.target = target;
+  if (a.kind == Kind::kRelease && p_.robust.release_point && carried == a.object &&
+      res.verdict != topology::Verdict::kReachable) {
+    // Robust variant: the centroid is cut off; anywhere in ℓ that the pair reaches now, as
+    // clear as ℓ allows.
+    const double inset = p_.robot_radius + p_.grasp.pair_margin + 2 * p_.goal_tolerance;
+    const double enough = 2 * (p_.robot_radius + max_object_radius());
+    if (auto p = release_point(res.freespace, region(a.region), map_, a.object, inset, enough,
+                               kReleaseStep)) {
+      a.target = *p;
+      ++recoveries_.release_points;
+      remember();
+      return out;
+    }
+  }
   switch (res.verdict) {
     case topology::Verdict::kReachable:
       remember();
       return out;
     case topology::Verdict::kBlockedByFixed:
+      if (!a.bare && plan_radius(a) > p_.robot_radius) {
+        // Robust variant: a passage only the contact margin closes is taken at the bare radius
+        // (the paper's), for this action only.
+        a.bare = true;
+        return plan(a, pose);
+      }
       out.kind = Advance::kInfeasible;
       out.reason = "fixed obstacles separate x* = " + point_text(target) + ": " + res.reason;
       return out;
@@ -888,10 +1028,6 @@ Executive::Advance Executive::plan_grasp(Activity& a, const Pose& pose) {
     return out;
   }
   const auto& ids = map_.movable_ids();
-  const auto it = std::find(ids.begin(), ids.end(), a.object);
-  if (it == ids.end()) throw Error("executive: " + a.object + " is not a movable obstacle now");
-  const std::size_t index = static_cast<std::size_t>(it - ids.begin());
-  const double rho = object_radius(a.object);
 
   // Exact freespaces: the robot's (every object an obstacle) and the pair's once gripped (the
   // object carried, radius r + ρ_i + pair_margin).
@@ -899,14 +1035,8 @@ Executive::Advance Executive::plan_grasp(Activity& a, const Pose& pose) {
   const double rp = plan_radius();
   const topology::TopologyResult here = timed_check(rp, pose.x, pose.x);
   const geometry::Region* f = &here.freespace;
-  const Point c = map_.movable()[index].center;
-  const geometry::RegionSet pair_free = [&] {
-    const ScopedStopwatch sw(times_.topology_s);
-    return freespace_of(topology::make_input(map_.workspace(), map_.familiar(), map_.movable(),
-                                             rp + rho + p_.grasp.pair_margin, c, c, index,
-                                             topology_cache_));
-  }();
-  topology_checks_ += 2;
+  const geometry::RegionSet pair_free = pair_freespace(a.object);
+  topology_checks_ += 1;
   const GraspCandidate* reachable = nullptr;
   const GraspCandidate* fallback = nullptr;
   for (const GraspCandidate& g : candidates) {

@@ -62,6 +62,12 @@ namespace rearm::executive {
 inline constexpr double kDropClearance = 3;
 // Drop points chosen again per DISASSEMBLE when a newly seen fragment takes the last one.
 inline constexpr int kMaxDropRetargets = 8;
+// m beyond the approach circle within which RobustParams::early_dock applies.
+inline constexpr double kEarlyDockReach = 0.1;
+// Miter limit (units of the dilation radius) of RobustParams::bevel.
+inline constexpr double kBevelMiterLimit = 1.0;
+// m: grid spacing of the robust release point's candidates (release_point).
+inline constexpr double kReleaseStep = 0.05;
 // m by which a chosen drop point beats the drop rule, so that the early stop holds within this
 // distance of it (the law converges to x* only asymptotically near obstacles).
 inline constexpr double kDropSlack = 0.15;
@@ -103,7 +109,40 @@ struct RobustParams {
   // When the mission is accepting, release again into its region every object an LTL RELEASE
   // placed and Fix mode later moved away (the formula holds, the end state would not).
   bool restore = true;
-  int max_back_outs = 4;  // per action
+  // After the gripper closes, back straight out along the docking line (the way the robot came)
+  // to the first point where the pair's centre is withdraw_clearance clear of its dilated
+  // surroundings, looked ahead up to withdraw_max (else to where it is clearest): an object
+  // gripped in a pocket's mouth or between obstacles is pulled out before the law of [7] steers
+  // the pair, which otherwise drives on into the pocket, where the pair cannot turn around.
+  // Every step keeps the robot and the object clear of everything known; the paper starts the
+  // pair's navigation where the grasp ended.
+  bool withdraw = true;
+  // When the topology check cuts ℓ's centroid (the paper's RELEASE target, §IV) off the pair,
+  // by objects or by fixed obstacles, RELEASE(M, ℓ) takes the pair to the point of ℓ it
+  // reaches now that keeps the object clearest of everything known (interface_layer.h,
+  // release_point), at least r + pair margin + 2 goal tolerances inside ℓ: the predicate holds
+  // anywhere in ℓ, and the paper would enter Fix mode or end the action infeasible. Taking that
+  // point on every RELEASE instead (measured first) completed 3 fewer of the 108 variant
+  // trials and none more: a centroid the pair reaches is kept.
+  bool release_point = true;
+  // Familiar obstacles dilated with the miter limit kBevelMiterLimit (every convex corner
+  // bevelled on the tangent of the disk dilation, as near as a polygon stays a superset of it)
+  // in every freespace the interface layer and the controller compute, instead of
+  // geometry::kMiterLimit (the mitered offset of reactive.md §2, the paper variant's): a right
+  // angle's miter reaches √2 (r + ρ) from the corner, and two such corners facing across a
+  // passage close it for the pair where the round dilation of the instance generator's
+  // certificate leaves it open.
+  bool bevel = true;
+  // When the progress monitor fires during GRASP with the robot within kEarlyDockReach of the
+  // object's approach circle, and docking straight from where it stands passes the checks of
+  // grasp_candidates (interface_layer.h, grasp_from), the grasp aligns and docks from there
+  // instead of following a guide to the chosen approach point: the law stalls beside the
+  // object's dilation, a few centimetres along the circle from that point (measured: 0.16 m on
+  // a corpus instance, four guides spent). Before the guide.
+  bool early_dock = true;
+  double withdraw_clearance = 0.25;  // m beyond the pair's dilation radius
+  double withdraw_max = 1.0;         // m of straight reverse travel at most
+  int max_back_outs = 4;             // per action
 };
 
 // How often each recovery of the robust variant fired in a run.
@@ -114,6 +153,9 @@ struct RecoveryCounts {
   int fallbacks = 0;       // rebuilds that kept clusters as convex pieces
   int restores = 0;        // objects released into their regions again after Fix mode moved them
   int early_releases = 0;  // RELEASEs ended short of the centroid with the object in the region
+  int withdrawals = 0;     // grasps that backed the pair out of a narrow place
+  int release_points = 0;  // RELEASEs sent elsewhere in the region, its centroid cut off
+  int early_docks = 0;     // GRASPs docked from where the robot stalled beside the object
 };
 
 struct ExecutiveParams {
@@ -216,7 +258,7 @@ class Executive {
 
  private:
   enum class Kind { kMove, kGrasp, kRelease, kDisassemble };
-  enum class Phase { kNavigate, kAlign, kDock, kGrip, kOpen, kBackOff };
+  enum class Phase { kNavigate, kAlign, kDock, kGrip, kWithdraw, kOpen, kBackOff };
 
   struct Activity {
     Kind kind = Kind::kMove;
@@ -234,8 +276,11 @@ class Executive {
     std::vector<geometry::Disk> plan_movable;
     std::optional<std::string> plan_carried;
     std::optional<Point> target;
-    std::string note;        // how navigation ended (reached x*, or stopped early), for the log
-    bool open_sent = false;  // Phase::kOpen: the open command was given
+    std::string note;          // how navigation ended (reached x*, or stopped early), for the log
+    bool open_sent = false;    // Phase::kOpen: the open command was given
+    double withdrawn = 0;      // Phase::kWithdraw: m reversed so far
+    double withdraw_goal = 0;  // Phase::kWithdraw: m to reverse (withdraw_distance)
+    bool bare = false;         // planned at the bare radius r: the contact margin alone closed x*
     // Reactive rebuild state.
     std::uint64_t built_version = 0;
     bool built = false;
@@ -277,7 +322,9 @@ class Executive {
   Advance prerequisites_then_navigate(Activity& a, const Pose& pose, double t, double dt);
   Advance align(Activity& a, const Pose& pose, double t);
   Advance dock(Activity& a, const Pose& pose, double t, double dt);
-  Advance grip(const Activity& a) const;
+  Advance grip(Activity& a, const Pose& pose, double t);
+  double withdraw_distance(const Activity& a, const Pose& pose) const;
+  Advance withdraw(Activity& a, const Pose& pose, double t, double dt);
   Advance open(Activity& a, double t);
   Advance back_off(Activity& a, const Pose& pose, double t, double dt);
   Advance navigate(Activity& a, const Pose& pose, double t, double dt);
@@ -294,6 +341,8 @@ class Executive {
   // Plans a guide from `center` to x* in the current mapped space (robust variant); false when
   // the guide budget is spent or no path helps (`note` says which).
   bool plan_guide(Activity& a, const Point& center, double t, std::string& note);
+  bool early_dock(const Activity& a, const Pose& pose);
+  geometry::RegionSet pair_freespace(const std::string& object);
   Advance command(Activity& a, const Pose& pose, double rho, double t, double dt);
   std::optional<Advance> arrive(Activity& a, const Point& center, double rho, double t);
   void end_current(ActionOutcome outcome, const std::string& reason, double t);
@@ -307,8 +356,12 @@ class Executive {
   // object excluded), its time added to times_.topology_s.
   topology::TopologyResult timed_check(double radius, const Point& x, const Point& target);
   const RegionOfInterest& region(const std::string& id) const;
-  // The robot radius of every planning freespace: r + RobustParams::contact_margin.
+  // The robot radius of every planning freespace: r + RobustParams::contact_margin; for an
+  // action whose x* only the margin separates from the robot, r (Activity::bare).
   double plan_radius() const;
+  double plan_radius(const Activity& a) const;
+  // The familiar dilations' miter limit (RobustParams::bevel).
+  double miter_limit() const;
   double max_object_radius() const;
   // Robust drop rule at the pair centre xc; `slack` (m) tightens both tests.
   bool drop_clear(const Point& xc, double rho, double slack = 0) const;

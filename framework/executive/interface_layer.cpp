@@ -55,6 +55,46 @@ geometry::RegionSet freespace_of(const topology::TopologyInput& in) {
   return geometry::subtract(in.bound, obstacles);
 }
 
+namespace {
+
+// The grasp from `approach` (robot centre), docking straight toward the object's centre: the
+// checks of grasp_candidates (header), nullopt when one fails.
+std::optional<GraspCandidate> grasp_along(const perception::SemanticMap& map,
+                                          std::string_view object, const geometry::Disk& m,
+                                          double r, const Point& approach, const Point& robot,
+                                          const GraspParams& p) {
+  const double d = (approach - m.center).norm();
+  if (!(d > m.radius + r + p.dock_gap)) return std::nullopt;
+  const Point u = (approach - m.center) / d;
+  GraspCandidate c;
+  c.approach = approach;
+  c.contact = m.center + (m.radius + r + p.dock_gap) * u;
+  c.pair_center = m.center + r * u;
+  c.distance = (c.approach - robot).norm();
+  // The approach point itself is checked against the object too (clearance standoff).
+  if (known_clearance(map, c.approach) < r) return std::nullopt;
+  for (int s = 1; s <= kDockSamples; ++s) {
+    const Point q = c.approach + (c.contact - c.approach) * (double(s) / kDockSamples);
+    if (known_clearance(map, q, object) < r) return std::nullopt;
+  }
+  if (known_clearance(map, c.pair_center, object) < r + m.radius + p.pair_margin) {
+    return std::nullopt;
+  }
+  return c;
+}
+
+}  // namespace
+
+std::optional<GraspCandidate> grasp_from(const perception::SemanticMap& map,
+                                         std::string_view object, double r, const Point& robot,
+                                         const GraspParams& p) {
+  if (!std::isfinite(r) || !(r > 0)) throw Error("grasp: robot radius must be finite and > 0");
+  if (!robot.allFinite()) throw Error("grasp: robot position is not finite");
+  std::optional<geometry::Disk> holder;
+  const geometry::Disk& m = object_disk(map, object, holder);
+  return grasp_along(map, object, m, r, robot, robot, p);
+}
+
 std::vector<GraspCandidate> grasp_candidates(const perception::SemanticMap& map,
                                              std::string_view object, double r, const Point& robot,
                                              const GraspParams& p) {
@@ -71,21 +111,8 @@ std::vector<GraspCandidate> grasp_candidates(const perception::SemanticMap& map,
   for (int k = 0; k < p.samples; ++k) {
     const double a = 2 * std::numbers::pi * k / p.samples;
     const Point u(std::cos(a), std::sin(a));
-    GraspCandidate c;
-    c.approach = m.center + (m.radius + r + p.standoff) * u;
-    c.contact = m.center + (m.radius + r + p.dock_gap) * u;
-    c.pair_center = m.center + r * u;
-    c.distance = (c.approach - robot).norm();
-    // The approach point itself is checked against the object too (clearance standoff).
-    if (known_clearance(map, c.approach) < r) continue;
-    bool dock_clear = true;
-    for (int s = 1; s <= kDockSamples && dock_clear; ++s) {
-      const Point q = c.approach + (c.contact - c.approach) * (double(s) / kDockSamples);
-      dock_clear = known_clearance(map, q, object) >= r;
-    }
-    if (!dock_clear) continue;
-    if (known_clearance(map, c.pair_center, object) < r + m.radius + p.pair_margin) continue;
-    out.push_back(c);
+    const Point approach = m.center + (m.radius + r + p.standoff) * u;
+    if (auto c = grasp_along(map, object, m, r, approach, robot, p)) out.push_back(*c);
   }
   std::stable_sort(out.begin(), out.end(), [](const GraspCandidate& a, const GraspCandidate& b) {
     return a.distance < b.distance;
@@ -143,6 +170,49 @@ std::optional<Point> disassemble_target(const geometry::Region& f,
   };
   consider(f.outer, false);
   for (const geometry::Polygon& h : f.holes) consider(h, true);
+  return best;
+}
+
+std::optional<Point> release_point(const geometry::Region& freespace,
+                                   const RegionOfInterest& region,
+                                   const perception::SemanticMap& map, std::string_view carried,
+                                   double inset, double enough, double step) {
+  if (!std::isfinite(inset) || !std::isfinite(enough) || !std::isfinite(step) || !(step > 0)) {
+    throw Error("release point: inset, enough and step must be finite (step > 0)");
+  }
+  const Point centroid = region_target(region);
+  std::vector<Point> candidates{centroid};
+  Point lo = region.polygon.vertices.front(), hi = lo;
+  for (const Point& v : region.polygon.vertices) {
+    lo = lo.cwiseMin(v);
+    hi = hi.cwiseMax(v);
+  }
+  const int nx = static_cast<int>(std::floor((hi.x() - lo.x()) / step));
+  const int ny = static_cast<int>(std::floor((hi.y() - lo.y()) / step));
+  if (static_cast<double>(nx + 1) * (ny + 1) > kMaxReleaseCandidates) {
+    throw Error("release point: region '" + region.id + "' needs more than " +
+                std::to_string(kMaxReleaseCandidates) + " grid points at step " +
+                std::to_string(step) + " m");
+  }
+  for (int j = 0; j <= ny; ++j) {
+    for (int i = 0; i <= nx; ++i) {
+      candidates.emplace_back(lo.x() + i * step, lo.y() + j * step);
+    }
+  }
+  std::optional<Point> best;
+  double best_score = -std::numeric_limits<double>::infinity();
+  double best_distance = 0;
+  for (const Point& p : candidates) {
+    if (-geometry::signed_distance(region.polygon, p) < inset) continue;
+    if (!geometry::contains(freespace, p)) continue;
+    const double score = std::min(known_clearance(map, p, carried), enough);
+    const double distance = (p - centroid).norm();
+    if (!best || score > best_score || (score == best_score && distance < best_distance)) {
+      best = p;
+      best_score = score;
+      best_distance = distance;
+    }
+  }
   return best;
 }
 

@@ -56,6 +56,13 @@ std::vector<GraspCandidate> grasp_candidates(const perception::SemanticMap& map,
                                              std::string_view object, double robot_radius,
                                              const Point& robot, const GraspParams& p);
 
+// The grasp with the robot where it stands as the approach point (docking straight toward the
+// object's centre), under the same checks as grasp_candidates: the robust variant's early dock.
+// nullopt when a check fails or the robot is within dock_gap of contact.
+std::optional<GraspCandidate> grasp_from(const perception::SemanticMap& map,
+                                         std::string_view object, double robot_radius,
+                                         const Point& robot, const GraspParams& p);
+
 // DISASSEMBLE(M_i, x*) target (paper §V-B): the midpoint of the edge of the pair's freespace F
 // that maximizes the minimum distance to every other movable object (disk boundary) and every
 // region of interest (0 inside one). Each midpoint is moved `inset` (m) into F along the edge's
@@ -70,6 +77,21 @@ std::optional<Point> disassemble_target(const geometry::Region& freespace,
                                         std::string_view carried,
                                         const std::vector<RegionOfInterest>& regions,
                                         double pair_radius, double inset = kDisassembleInset);
+
+// RELEASE(M_i, ℓ) target of the robust variant (the predicate holds wherever in ℓ the object
+// lies, §II-B; the paper drives the pair's centre to ℓ's centroid, §IV). Candidates: the points
+// of a grid of spacing `step` (m) over ℓ that lie at least `inset` (m) inside ℓ (so the object,
+// within inset of the pair's centre whatever the final heading, lands inside ℓ) and in the
+// pair's freespace F (exact point location). Chosen: the candidate whose clearance from
+// everything known but the carried object (known_clearance) is largest, counted up to `enough`
+// (m); among those reaching it, the one nearest the centroid, so that in the open the paper's
+// point is kept and beside clutter the object is set down as far from it as ℓ allows. The
+// centroid itself is a candidate (ties go to it). nullopt when no candidate lies in F.
+inline constexpr double kMaxReleaseCandidates = 1e6;
+std::optional<Point> release_point(const geometry::Region& freespace,
+                                   const RegionOfInterest& region,
+                                   const perception::SemanticMap& map, std::string_view carried,
+                                   double inset, double enough, double step);
 
 // Early stop of DISASSEMBLE (paper §V-B): the pair disk (centre xc, radius pair_radius)
 // intersects no region of interest, and xc is at least 2(r + max_k ρ_k) from every other

@@ -98,6 +98,9 @@ std::string metrics_json(const scenario::Scenario& s, const RunRecord& r) {
   j.key("convex_fallbacks").value(t.recoveries.fallbacks);
   j.key("restores").value(t.recoveries.restores);
   j.key("early_releases").value(t.recoveries.early_releases);
+  j.key("withdrawals").value(t.recoveries.withdrawals);
+  j.key("release_points").value(t.recoveries.release_points);
+  j.key("early_docks").value(t.recoveries.early_docks);
   j.end_object();
   j.key("robot_path_length_m").value(t.robot_path_length);
   j.key("object_path_length_m").value(t.object_path_length);

@@ -58,6 +58,10 @@ executive::TaskSpec task_spec(const scenario::Scenario& s) {
   e.robust.restore = s.controller.restore;
   e.robust.drop = s.controller.drop;
   e.robust.early_release = s.controller.early_release;
+  e.robust.withdraw = s.controller.withdraw;
+  e.robust.release_point = s.controller.release_point;
+  e.robust.bevel = s.controller.bevel;
+  e.robust.early_dock = s.controller.early_dock;
   if (s.controller.variant == "paper") e.robust.contact_margin = 0;
   e.max_ltl_actions = s.simulation.max_actions;
   return t;

@@ -86,6 +86,9 @@ void outcome_fields(const TrialRecord& r, std::vector<std::string>& f) {
   f.push_back(integer(o.recoveries.fallbacks));
   f.push_back(integer(o.recoveries.restores));
   f.push_back(integer(o.recoveries.early_releases));
+  f.push_back(integer(o.recoveries.withdrawals));
+  f.push_back(integer(o.recoveries.release_points));
+  f.push_back(integer(o.recoveries.early_docks));
   f.push_back(integer(o.collisions));
   f.push_back(exact(o.min_clearance_m));
   f.push_back(integer(o.queries));
@@ -141,6 +144,9 @@ const std::vector<std::string>& trial_columns() {
                                                    "convex_fallbacks",
                                                    "restores",
                                                    "early_releases",
+                                                   "withdrawals",
+                                                   "release_points",
+                                                   "early_docks",
                                                    "collisions",
                                                    "min_clearance_m",
                                                    "queries",

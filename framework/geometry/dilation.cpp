@@ -7,11 +7,11 @@
 //  - dilate_miter: the mitered offset of the whole polygon, built exactly (unite_all) as the
 //    union of the polygon, each edge's outward strip of width r, and at each convex vertex
 //    the miter corner bounded by the two offset lines; a corner whose miter point lies
-//    farther than kMiterLimit·r from the vertex is bevelled by the line perpendicular to the
-//    corner's bisector at distance kMiterLimit·r. Reflex vertices need no corner: the two
-//    strips overlap there. The result contains the exact disk dilation (strips cover the
-//    edges, corners the vertex sectors, and the bevel line is at distance >= r); its points
-//    are within r / cos(φ/2) of the polygon at unbevelled corners (φ the turning angle) and
+//    farther than limit·r (kMiterLimit by default) from the vertex is bevelled by the line
+//    perpendicular to the corner's bisector at distance kMiterLimit·r. Reflex vertices need no
+//    corner: the two strips overlap there. The result contains the exact disk dilation (strips
+//    cover the edges, corners the vertex sectors, and the bevel line is at distance >= r); its
+//    points are within r / cos(φ/2) of the polygon at unbevelled corners (φ the turning angle) and
 //    within sqrt(kMiterLimit² + 1)·r at bevelled ones (the bevel's ends).
 #include "geometry/dilation.h"
 
@@ -67,8 +67,12 @@ RegionSet dilate_round(const Polygon& p, double r) {
   return RegionSet{internal::from_cgal(sum)};
 }
 
-RegionSet dilate_miter(const Polygon& p, double r) {
+RegionSet dilate_miter(const Polygon& p, double r, double limit_factor) {
   check_radius(r, "dilate_miter");
+  if (!std::isfinite(limit_factor) || !(limit_factor >= 1)) {
+    throw Error("dilate_miter: the miter limit must be finite and >= 1, got " +
+                std::to_string(limit_factor));
+  }
   const Polygon q = validated(p, "dilate_miter polygon");  // counter-clockwise
   const std::size_t n = q.size();
   auto cross = [](const Point& a, const Point& b) { return a.x() * b.y() - a.y() * b.x(); };
@@ -83,7 +87,7 @@ RegionSet dilate_miter(const Polygon& p, double r) {
     const Point& b = q.vertices[(i + 1) % n];
     parts.push_back(Polygon{{a, a + r * normal[i], b + r * normal[i], b}});
   }
-  const double limit = kMiterLimit * r;
+  const double limit = limit_factor * r;
   for (std::size_t i = 0; i < n; ++i) {  // convex corners
     const std::size_t in = (i + n - 1) % n;
     if (!(cross(dir[in], dir[i]) > 0)) continue;  // reflex or collinear: strips suffice

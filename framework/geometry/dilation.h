@@ -28,7 +28,9 @@ inline constexpr double kMiterLimit = 2.0;
 
 // p is validated (polygon.h); r must be finite and > 0. Both throw rearm::Error otherwise.
 RegionSet dilate_round(const Polygon& p, double r);
-RegionSet dilate_miter(const Polygon& p, double r);
+// `limit`: the miter limit in units of r (finite, >= 1; kMiterLimit unless a caller asks for
+// tighter corners: 1 bevels every convex corner on the disk dilation's tangent).
+RegionSet dilate_miter(const Polygon& p, double r, double limit = kMiterLimit);
 
 // Sides of the circumscribed regular polygon that stands for a disk (a dilated movable object,
 // a corner of an eroded workspace) in exact Booleans: a superset of the disk whose boundary is

@@ -90,12 +90,25 @@ std::optional<std::pair<Point, Point>> find_lid(const Polygon& pocket, const Pol
 
 }  // namespace
 
+DilationCache::DilationCache(double miter_limit) : miter_limit_(miter_limit) {
+  set_miter_limit(miter_limit);
+}
+
+void DilationCache::set_miter_limit(double limit) {
+  if (!std::isfinite(limit) || !(limit >= 1)) {
+    throw Error("dilation cache: the miter limit must be finite and >= 1, got " +
+                std::to_string(limit));
+  }
+  if (limit != miter_limit_) entries_.clear();
+  miter_limit_ = limit;
+}
+
 const geometry::RegionSet& DilationCache::miter(const Polygon& p, double d) {
   for (const Entry& e : entries_) {
     if (e.distance == d && e.polygon.vertices == p.vertices) return e.dilation;
   }
   if (entries_.size() >= kDilationCacheEntries) entries_.clear();
-  entries_.push_back(Entry{p, d, geometry::dilate_miter(p, d)});
+  entries_.push_back(Entry{p, d, geometry::dilate_miter(p, d, miter_limit_)});
   return entries_.back().dilation;
 }
 
@@ -211,8 +224,8 @@ MappedSpace build_mapped_space(const SemanticInput& in, double radius, const Poi
         // ρ + r + kContactSlack): the navigation law then keeps the robot outside the very
         // polygon that the next rebuild's freespace excludes.
         const Disk& d = in.movable[last->index];
-        m.movable.push_back(Disk{
-            d.center, geometry::disk_polygon_circumradius(d.radius + radius + kContactSlack)});
+        m.movable.push_back(
+            Disk{d.center, geometry::disk_polygon_circumradius(d.radius + radius + kContactSlack)});
       }
       continue;
     }

@@ -12,6 +12,7 @@
 
 #include "core/error.h"
 #include "geometry/convex.h"
+#include "geometry/dilation.h"
 #include "geometry/polygon.h"
 
 namespace rearm::reactive {
@@ -77,11 +78,17 @@ inline constexpr std::size_t kDilationCacheEntries = 256;
 
 class DilationCache {
  public:
+  // `miter_limit`: geometry::dilate_miter's limit for every dilation of this cache.
+  explicit DilationCache(double miter_limit = geometry::kMiterLimit);
   // The mitered dilation of p by d (geometry::dilate_miter), computed once per (p, d).
   const geometry::RegionSet& miter(const Polygon& p, double d);
   std::size_t size() const { return entries_.size(); }
+  // A new limit empties the cache.
+  void set_miter_limit(double limit);
+  double miter_limit() const { return miter_limit_; }
 
  private:
+  double miter_limit_;
   struct Entry {
     Polygon polygon;
     double distance;

@@ -65,6 +65,9 @@ class ReactiveController {
   // Every familiar component kept as its convex pieces from the next rebuild on (the executive
   // sets it for an action where Dh turned singular).
   void set_convexify_all(bool on) { convexify_all_ = on; }
+  // The miter limit of the familiar obstacles' dilations (geometry::dilate_miter) from the next
+  // rebuild on.
+  void set_miter_limit(double limit) { dilations_.set_miter_limit(limit); }
   // Rebuilds that used the convex fallback.
   int fallbacks() const { return fallbacks_; }
 

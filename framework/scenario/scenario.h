@@ -62,6 +62,10 @@ struct Controller {
   bool restore = true;          // robust only: re-place objects Fix mode moved off their goal
   bool drop = true;             // robust only: drop disassembled objects clear of everything
   bool early_release = true;    // robust only: release once the object is inside its region
+  bool withdraw = true;         // robust only: back the pair out of a narrow place after a grasp
+  bool release_point = true;    // robust only: release where in the region it is clearest
+  bool bevel = true;            // robust only: familiar corners bevelled on the disk's tangent
+  bool early_dock = true;       // robust only: dock from where the robot stalls beside the object
 };
 
 // The robust variant's switches by key (scenario files; the ablation methods "rearm-no<key>").
@@ -72,7 +76,9 @@ struct RobustSwitch {
 inline constexpr RobustSwitch kRobustSwitches[] = {
     {"guide", &Controller::guide},       {"convex_fallback", &Controller::convex_fallback},
     {"back_out", &Controller::back_out}, {"restore", &Controller::restore},
-    {"drop", &Controller::drop},         {"early_release", &Controller::early_release}};
+    {"drop", &Controller::drop},         {"early_release", &Controller::early_release},
+    {"withdraw", &Controller::withdraw}, {"release_point", &Controller::release_point},
+    {"bevel", &Controller::bevel},       {"early_dock", &Controller::early_dock}};
 
 // Sets the variant ("robust" or "paper") and every switch: all on, or all off.
 inline void set_variant(Controller& c, const std::string& variant) {

@@ -77,7 +77,8 @@ void read_controller(Reader& r, const YAML::Node& n, Controller& c) {
   const Fields f(
       r, n, "controller",
       {"p", "epsilon", "mu1", "mu2", "k_v", "k_omega", "goal_tolerance", "fragment_tolerance",
-       "variant", "guide", "convex_fallback", "back_out", "restore", "drop", "early_release"});
+       "variant", "guide", "convex_fallback", "back_out", "restore", "drop", "early_release",
+       "withdraw", "release_point", "bevel", "early_dock"});
   struct Field {
     const char* key;
     double* value;

@@ -314,7 +314,8 @@ struct TopologyCache::Impl {
     std::vector<RegionSet> fixed;
     std::shared_ptr<const detail::ExactFreespace> set;
   };
-  std::vector<Freespace> freespaces;  // least recently used first
+  std::vector<Freespace> freespaces;           // least recently used first
+  double miter_limit = geometry::kMiterLimit;  // of every familiar dilation held
 
   struct Dilation {
     Polygon polygon;  // the key: the caller's polygon, as given
@@ -363,8 +364,9 @@ struct TopologyCache::Impl {
         return d.result;
       }
     }
-    RegionSet result = erosion ? geometry::erode(p, r)
-                               : geometry::dilate_miter(geometry::validated(p, what.c_str()), r);
+    RegionSet result =
+        erosion ? geometry::erode(p, r)
+                : geometry::dilate_miter(geometry::validated(p, what.c_str()), r, miter_limit);
     if (dilations.size() >= kTopologyCacheDilations) dilations.clear();
     dilations.push_back(Dilation{p, r, erosion, std::move(result)});
     return dilations.back().result;
@@ -377,7 +379,22 @@ TopologyCache::TopologyCache(TopologyCache&&) noexcept = default;
 TopologyCache& TopologyCache::operator=(TopologyCache&&) noexcept = default;
 std::size_t TopologyCache::freespaces() const { return impl_ ? impl_->freespaces.size() : 0; }
 std::size_t TopologyCache::dilations() const { return impl_ ? impl_->dilations.size() : 0; }
-void TopologyCache::clear() { impl_ = std::make_unique<Impl>(); }
+void TopologyCache::clear() {
+  const double limit = impl_ ? impl_->miter_limit : geometry::kMiterLimit;
+  impl_ = std::make_unique<Impl>();
+  impl_->miter_limit = limit;
+}
+
+void TopologyCache::set_miter_limit(double limit) {
+  if (!std::isfinite(limit) || !(limit >= 1)) {
+    throw Error("topology cache: the miter limit must be finite and >= 1, got " +
+                std::to_string(limit));
+  }
+  if (!impl_) impl_ = std::make_unique<Impl>();
+  if (limit == impl_->miter_limit) return;
+  clear();
+  impl_->miter_limit = limit;
+}
 
 // --- The check ---
 

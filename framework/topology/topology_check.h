@@ -148,6 +148,9 @@ class TopologyCache {
   std::size_t freespaces() const;  // sets bound − ∪fixed held
   std::size_t dilations() const;   // dilations and erosions held
   void clear();
+  // The miter limit of make_input's familiar dilations (geometry::dilate_miter; kMiterLimit
+  // unless set). A new limit empties the cache.
+  void set_miter_limit(double limit);
 
   struct Impl;  // topology_check.cpp
 

@@ -7,6 +7,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
 #include <string>
 
 #include "core/error.h"
@@ -154,6 +158,90 @@ TEST(Executive, AStuckActionIsReportedAndTheAlternativeRuns) {
   EXPECT_EQ(r2.status, TaskStatus::kStuck);
   EXPECT_NE(r2.reason.find("did not close on M"), std::string::npos) << r2.reason;
   EXPECT_NE(r2.reason.find("no alternative action"), std::string::npos) << r2.reason;
+}
+
+// Distance from p to the polygon's boundary, by its edges (the test's own geometry).
+double edge_distance(const Polygon& poly, const Point& p) {
+  double best = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0, n = poly.vertices.size(); i < n; ++i) {
+    const Point& a = poly.vertices[i];
+    const Point& b = poly.vertices[(i + 1) % n];
+    const double s = std::clamp((p - a).dot(b - a) / (b - a).squaredNorm(), 0.0, 1.0);
+    best = std::min(best, (a + s * (b - a) - p).norm());
+  }
+  return best;
+}
+
+// A U-shaped pocket opening upward with lips that narrow its mouth to 1 m; M1 sits in the
+// mouth, the robot comes from above. Docked, the pair's centre (ρ ahead of the robot) is
+// 0.51 m from the lips' corners: free for the pair's radius r + margin + ρ + pair margin =
+// 0.465 m, but in the mouth, where the law of [7] drives the pair on into the pocket.
+TaskSpec pocket_mouth(const std::string& formula) {
+  TaskSpec t;
+  t.world.workspace = rect(0, 0, 10, 8);
+  t.world.familiar = {
+      {"P1", Polygon{{Point(3, 1.8), Point(5, 1.8), Point(5, 4), Point(4.5, 4), Point(4.5, 3.8),
+                      Point(4.8, 3.8), Point(4.8, 2), Point(3.2, 2), Point(3.2, 3.8),
+                      Point(3.5, 3.8), Point(3.5, 4), Point(3, 4)}}}};
+  t.world.movable = {{"M1", geometry::Disk{Point(4, 3.9), 0.25}}};
+  t.regions = {{"l1", rect(7, 5.5, 8, 6.5)}};
+  t.formula = formula;
+  return t;
+}
+
+const Pose kAbovePocket{Point(4, 6.5), -std::numbers::pi / 2};
+
+// Robust variant: after the gripper closes, the robot reverses straight along its docking line
+// until the pair's centre is withdraw_clearance clear of its dilated surroundings (checked here
+// against the pocket's edges), then carries M1 out to l1. Off, the grasp ends where it docked.
+TEST(Executive, AGraspInAPocketsMouthWithdrawsTheObjectStraightOut) {
+  TaskSpec t = pocket_mouth("<>grasp(M1)");
+  const RobustParams& rp = t.executive.robust;
+  const double pair_radius =
+      t.executive.robot_radius + rp.contact_margin + 0.25 + t.executive.grasp.pair_margin;
+  const Polygon& pocket = t.world.familiar[0].polygon;
+  auto pair_center = [](const Pose& q) {
+    return Point(q.x + 0.25 * Point(std::cos(q.psi), std::sin(q.psi)));
+  };
+
+  KinematicPlant plant(t.world, 0.2, kAbovePocket);
+  const TaskResult r = run_task(t, plant);
+  ASSERT_EQ(r.status, TaskStatus::kCompleted) << r.reason;
+  EXPECT_EQ(r.recoveries.withdrawals, 1);
+  EXPECT_NE(r.actions[0].reason.find("withdrew"), std::string::npos) << r.actions[0].reason;
+  const Pose end = plant.pose();
+  EXPECT_GE(edge_distance(pocket, pair_center(end)), pair_radius + rp.withdraw_clearance - 1e-6);
+  // Straight back, facing the object: the heading is unchanged and M1 is still ahead.
+  EXPECT_NEAR(std::remainder(end.psi + std::numbers::pi / 2, 2 * std::numbers::pi), 0, 0.05);
+  EXPECT_NEAR((plant.object_center(0) - end.x).norm(), 0.45, 0.01);
+
+  TaskSpec off = t;
+  off.executive.robust.withdraw = false;
+  KinematicPlant plant_off(off.world, 0.2, kAbovePocket);
+  const TaskResult r_off = run_task(off, plant_off);
+  ASSERT_EQ(r_off.status, TaskStatus::kCompleted) << r_off.reason;
+  EXPECT_EQ(r_off.recoveries.withdrawals, 0);
+  EXPECT_LT(edge_distance(pocket, pair_center(plant_off.pose())),
+            pair_radius + rp.withdraw_clearance);
+
+  TaskSpec carry = pocket_mouth("<>(grasp(M1) && <>release(M1,l1))");
+  KinematicPlant plant_carry(carry.world, 0.2, kAbovePocket);
+  const TaskResult rc = run_task(carry, plant_carry);
+  ASSERT_EQ(rc.status, TaskStatus::kCompleted) << rc.reason;
+  EXPECT_TRUE(inside(carry, "l1", plant_carry.object_center(0)));
+  EXPECT_EQ(rc.collisions, 0);
+
+  // The sealed case: l2 lies inside the pocket behind M1, so Fix mode grasps M1 in the mouth
+  // (withdrawing it) and drops it clear before M2 goes in.
+  TaskSpec seal = pocket_mouth("<>(grasp(M2) && <>release(M2,l2))");
+  seal.world.movable.push_back({"M2", geometry::Disk{Point(7, 3), 0.25}});
+  seal.regions.push_back({"l2", rect(3.5, 2.3, 4.5, 3.3)});
+  KinematicPlant plant_seal(seal.world, 0.2, kAbovePocket);
+  const TaskResult rs = run_task(seal, plant_seal);
+  ASSERT_EQ(rs.status, TaskStatus::kCompleted) << rs.reason;
+  EXPECT_TRUE(inside(seal, "l2", plant_seal.object_center(1)));
+  EXPECT_EQ(rs.recoveries.withdrawals, 1);
+  EXPECT_EQ(rs.collisions, 0);
 }
 
 TEST(Executive, ReleaseWithoutTheObjectGraspsItFirst) {

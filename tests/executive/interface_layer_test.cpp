@@ -141,6 +141,56 @@ TEST(InterfaceLayer, DisassembleTargetInsetsHoleEdgesAwayFromTheHole) {
   EXPECT_NEAR((*t - Point(5, 0.99)).norm(), 0, 1e-12);
 }
 
+// The early dock's grasp from where the robot stands, beside the same M1 (0.6 m from the west
+// wall): docking along the line through the robot and M1's centre, the pair centre 0.2 m from
+// M1 toward the robot must be 0.455 m from the wall, i.e. cos a >= -0.725 as above.
+TEST(InterfaceLayer, GraspFromWhereTheRobotStands) {
+  const auto map = make_map(open_room(), Point(5, 8.5));
+  GraspParams p;
+  const Point m(0.6, 8.0);
+  for (const double a : {0.0, 1.0, 2.0, 2.4, 2.5, 3.0}) {
+    const Point u(std::cos(a), std::sin(a));
+    const Point robot = m + 0.5 * u;  // 0.05 m from contact
+    const auto g = grasp_from(map, "M1", 0.2, robot, p);
+    EXPECT_EQ(g.has_value(), std::cos(a) >= -0.725) << a;
+    if (!g) continue;
+    EXPECT_NEAR((g->contact - (m + 0.451 * u)).norm(), 0, 1e-12);
+    EXPECT_NEAR((g->pair_center - (m + 0.2 * u)).norm(), 0, 1e-12);
+    EXPECT_EQ(g->approach, robot);
+  }
+  // At contact already (within the dock gap): nothing to dock.
+  EXPECT_FALSE(grasp_from(map, "M1", 0.2, m + Point(0.4505, 0), p).has_value());
+  EXPECT_THROW(grasp_from(map, "M9", 0.2, m + Point(0.5, 0), p), Error);
+}
+
+// Robust RELEASE point: l = [6.2, 7.2] × [4.5, 5.5] lies 0.2 m east of P1 (x <= 6); with an
+// inset of 0.3 m the candidates span x ∈ [6.5, 6.9], and the clearance of a point is x − 6
+// (P1; the walls, M2 and the region's other sides are farther), below `enough` = 2 m: the
+// chosen point is the easternmost grid column (x = 6.9 up to the grid step and rounding), on
+// the row nearest the centroid. Where every candidate is clear enough the centroid itself
+// wins; where F holds no candidate there is none.
+TEST(InterfaceLayer, ReleasePointKeepsTheObjectClearestInsideTheRegion) {
+  const auto map = make_map(open_room(), Point(1, 1));
+  const geometry::Region room{rect(0, 0, 10, 10), {}};
+  const RegionOfInterest beside{"l", rect(6.2, 4.5, 7.2, 5.5)};
+  const double step = 0.05;
+  const auto p = release_point(room, beside, map, "M1", 0.3, 2.0, step);
+  ASSERT_TRUE(p.has_value());
+  EXPECT_LE(p->x(), 6.9 + 1e-9);
+  EXPECT_GE(p->x(), 6.9 - step - 1e-9);
+  EXPECT_NEAR(p->y(), 5.0, step / 2 + 1e-9);
+
+  const RegionOfInterest open{"o", rect(1, 1, 2, 2)};
+  const auto c = release_point(room, open, map, "M1", 0.3, 0.5, step);
+  ASSERT_TRUE(c.has_value());
+  EXPECT_EQ(*c, Point(1.5, 1.5));
+
+  const geometry::Region corner{rect(0, 0, 3, 3), {}};
+  EXPECT_FALSE(release_point(corner, beside, map, "M1", 0.3, 2.0, step).has_value());
+  EXPECT_THROW(release_point(room, beside, map, "M1", 0.3, 2.0, 0), Error);
+  EXPECT_THROW(release_point(room, beside, map, "M1", std::nan(""), 2.0, step), Error);
+}
+
 TEST(InterfaceLayer, EarlyStopRule) {
   // r = 0.2, ρ = 0.25 for both objects: the pair centre must be 2(0.2 + 0.25) = 0.9 m from
   // every other object and obstacle, and its disk (0.45) must miss every region.

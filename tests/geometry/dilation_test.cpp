@@ -196,6 +196,11 @@ TEST(DilationTest, MiterOnRandomPolygons) {
       SCOPED_TRACE(testing::Message() << "trial " << trial << " r " << r);
       const RegionSet d = dilate_miter(p, r);
       check_dilation(p, r, d, miter_bound(p, r), rng);
+      // Every convex corner bevelled on the disk's tangent (limit 1): still a superset of the
+      // exact dilation, inside the default one.
+      const RegionSet tight = dilate_miter(p, r, 1.0);
+      check_dilation(p, r, tight, miter_bound(p, r), rng);
+      EXPECT_LE(total_area(tight), total_area(d) * (1 + kRelSlack));
       const double area = total_area(d);
       if (convex) {
         // Mitered offset of a convex polygon: A + P r + Σ corner areas (bevelled ones cut).
@@ -211,60 +216,64 @@ TEST(DilationTest, MiterOnRandomPolygons) {
 
 // For convex input the result is the single mitered polygon: its vertices are the
 // intersections of consecutive offset lines (solved here as 2x2 linear systems), or, where
-// that point is farther than kMiterLimit·r from the vertex, the two points of the offset
-// lines at distance kMiterLimit·r along the corner's bisector.
+// that point is farther than limit·r from the vertex, the two points of the offset lines at
+// distance limit·r along the corner's bisector; for the default limit and for 1 (every corner
+// bevelled on the tangent of the disk dilation).
 TEST(DilationTest, MiterOfConvexPolygonIsOffsetLineIntersection) {
-  Rng rng(5);
-  for (int trial = 0; trial < 10; ++trial) {
-    const Polygon p = random_convex(rng, static_cast<int>(rng.uniform_int(3, 10)));
-    const double r = rng.uniform(0.05, 1.0);
-    const RegionSet d = dilate_miter(p, r);
-    ASSERT_EQ(d.size(), 1u);
-    EXPECT_TRUE(d[0].holes.empty());
-    const std::size_t n = p.size();
-    std::size_t expected_vertices = 0;
-    auto has_vertex = [&](const Point& x) {
-      double best = std::numeric_limits<double>::infinity();
-      for (const Point& w : d[0].outer.vertices) best = std::min(best, (w - x).norm());
-      return best < 1e-9;
-    };
-    for (std::size_t i = 0; i < n; ++i) {
-      const Point& prev = p.vertices[(i + n - 1) % n];
-      const Point& v = p.vertices[i];
-      const Point& next = p.vertices[(i + 1) % n];
-      Eigen::Matrix2d normals;
-      const Point d1 = (v - prev).normalized(), d2 = (next - v).normalized();
-      const Point n1(d1.y(), -d1.x()), n2(d2.y(), -d2.x());
-      normals.row(0) = n1.transpose();
-      normals.row(1) = n2.transpose();
-      // Offset lines: n_k · x = n_k · v + r.
-      const Point rhs(n1.dot(v) + r, n2.dot(v) + r);
-      const Point miter = normals.partialPivLu().solve(rhs);
-      if ((miter - v).norm() <= kMiterLimit * r) {
-        EXPECT_TRUE(has_vertex(miter)) << "corner " << i;
-        ++expected_vertices;
-        continue;
+  for (const double limit : {kMiterLimit, 1.0}) {
+    SCOPED_TRACE(limit);
+    Rng rng(5);
+    for (int trial = 0; trial < 10; ++trial) {
+      const Polygon p = random_convex(rng, static_cast<int>(rng.uniform_int(3, 10)));
+      const double r = rng.uniform(0.05, 1.0);
+      const RegionSet d = dilate_miter(p, r, limit);
+      ASSERT_EQ(d.size(), 1u);
+      EXPECT_TRUE(d[0].holes.empty());
+      const std::size_t n = p.size();
+      std::size_t expected_vertices = 0;
+      auto has_vertex = [&](const Point& x) {
+        double best = std::numeric_limits<double>::infinity();
+        for (const Point& w : d[0].outer.vertices) best = std::min(best, (w - x).norm());
+        return best < 1e-9;
+      };
+      for (std::size_t i = 0; i < n; ++i) {
+        const Point& prev = p.vertices[(i + n - 1) % n];
+        const Point& v = p.vertices[i];
+        const Point& next = p.vertices[(i + 1) % n];
+        Eigen::Matrix2d normals;
+        const Point d1 = (v - prev).normalized(), d2 = (next - v).normalized();
+        const Point n1(d1.y(), -d1.x()), n2(d2.y(), -d2.x());
+        normals.row(0) = n1.transpose();
+        normals.row(1) = n2.transpose();
+        // Offset lines: n_k · x = n_k · v + r.
+        const Point rhs(n1.dot(v) + r, n2.dot(v) + r);
+        const Point miter = normals.partialPivLu().solve(rhs);
+        if ((miter - v).norm() <= limit * r) {
+          EXPECT_TRUE(has_vertex(miter)) << "corner " << i;
+          ++expected_vertices;
+          continue;
+        }
+        // Bevel: each offset line meets the line b · x = b · v + limit·r.
+        const Point b = (n1 + n2).normalized();
+        for (const Point& nk : {n1, n2}) {
+          Eigen::Matrix2d m;
+          m.row(0) = nk.transpose();
+          m.row(1) = b.transpose();
+          const Point q = m.partialPivLu().solve(Point(nk.dot(v) + r, b.dot(v) + limit * r));
+          EXPECT_TRUE(has_vertex(q)) << "bevel of corner " << i;
+        }
+        expected_vertices += 2;
       }
-      // Bevel: each offset line meets the line b · x = b · v + kMiterLimit·r.
-      const Point b = (n1 + n2).normalized();
-      for (const Point& nk : {n1, n2}) {
-        Eigen::Matrix2d m;
-        m.row(0) = nk.transpose();
-        m.row(1) = b.transpose();
-        const Point q = m.partialPivLu().solve(Point(nk.dot(v) + r, b.dot(v) + kMiterLimit * r));
-        EXPECT_TRUE(has_vertex(q)) << "bevel of corner " << i;
+      // The union keeps the strips' ends as collinear boundary points: count true corners.
+      const auto& w = d[0].outer.vertices;
+      std::size_t corners = 0;
+      for (std::size_t k = 0; k < w.size(); ++k) {
+        const Point e1 = w[k] - w[(k + w.size() - 1) % w.size()];
+        const Point e2 = w[(k + 1) % w.size()] - w[k];
+        if (std::abs(cross(e1, e2)) > 1e-9 * e1.norm() * e2.norm()) ++corners;
       }
-      expected_vertices += 2;
+      EXPECT_EQ(corners, expected_vertices);
     }
-    // The union keeps the strips' ends as collinear boundary points: count true corners.
-    const auto& w = d[0].outer.vertices;
-    std::size_t corners = 0;
-    for (std::size_t k = 0; k < w.size(); ++k) {
-      const Point e1 = w[k] - w[(k + w.size() - 1) % w.size()];
-      const Point e2 = w[(k + 1) % w.size()] - w[k];
-      if (std::abs(cross(e1, e2)) > 1e-9 * e1.norm() * e2.norm()) ++corners;
-    }
-    EXPECT_EQ(corners, expected_vertices);
   }
 }
 
@@ -329,6 +338,10 @@ TEST(DilationTest, BadRadiusThrows) {
   const Polygon bowtie = make({{0, 0}, {1, 1}, {1, 0}, {0, 1}});
   EXPECT_THROW(dilate_round(bowtie, 1), Error);
   EXPECT_THROW(dilate_miter(bowtie, 1), Error);
+  for (double limit : {0.99, 0.0, -1.0, std::numeric_limits<double>::quiet_NaN(),
+                       std::numeric_limits<double>::infinity()}) {
+    EXPECT_THROW(dilate_miter(sq, 1, limit), Error) << limit;
+  }
 }
 
 }  // namespace

@@ -815,23 +815,24 @@ TEST(ScenarioRoundTrip, WrittenForm) {
       "w.yaml");
   EXPECT_EQ(s.description, "say \"hi\"\n\tback\\slash # not a comment");
   EXPECT_EQ(s.robot.start.x(), 0.1 + 0.2);
-  EXPECT_EQ(to_yaml(s),
-            "name: \"w\"\n"
-            "description: \"say \\\"hi\\\"\\n\\tback\\\\slash # not a comment\"\n"
-            "workspace: [[0, 0], [4, 0], [4, 4], [0, 4]]\n"
-            "robot: {radius: 0.1, start: [0.30000000000000004, 2], heading: 0, v_max: 0.4, "
-            "omega_max: 1, sensor_range: 3}\n"
-            "regions: []\n"
-            "objects: []\n"
-            "familiar: []\n"
-            "unknown: []\n"
-            "task: \"<>move(l1)\"\n"
-            "controller: {p: 20, epsilon: 1, mu1: 1, mu2: 0.05, k_v: 1, k_omega: 1, "
-            "goal_tolerance: 0.05, fragment_tolerance: 0.1, variant: robust, guide: true, "
-            "convex_fallback: true, back_out: true, restore: true, drop: true, "
-            "early_release: true}\n"
-            "simulation: {dt: 0.01, time_budget: 1200, velocity_iterations: 8, "
-            "position_iterations: 3, max_actions: 0}\n");
+  EXPECT_EQ(
+      to_yaml(s),
+      "name: \"w\"\n"
+      "description: \"say \\\"hi\\\"\\n\\tback\\\\slash # not a comment\"\n"
+      "workspace: [[0, 0], [4, 0], [4, 4], [0, 4]]\n"
+      "robot: {radius: 0.1, start: [0.30000000000000004, 2], heading: 0, v_max: 0.4, "
+      "omega_max: 1, sensor_range: 3}\n"
+      "regions: []\n"
+      "objects: []\n"
+      "familiar: []\n"
+      "unknown: []\n"
+      "task: \"<>move(l1)\"\n"
+      "controller: {p: 20, epsilon: 1, mu1: 1, mu2: 0.05, k_v: 1, k_omega: 1, "
+      "goal_tolerance: 0.05, fragment_tolerance: 0.1, variant: robust, guide: true, "
+      "convex_fallback: true, back_out: true, restore: true, drop: true, "
+      "early_release: true, withdraw: true, release_point: true, bevel: true, early_dock: true}\n"
+      "simulation: {dt: 0.01, time_budget: 1200, velocity_iterations: 8, "
+      "position_iterations: 3, max_actions: 0}\n");
 }
 
 std::string random_identifier(Rng& rng, std::size_t index) {

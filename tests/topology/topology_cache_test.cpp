@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <bit>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <optional>
@@ -198,6 +199,40 @@ TEST(TopologyCache, KeepsBoundMinusFixedAcrossObjectMoves) {
     compare(in, cache, "set " + std::to_string(k));
   }
   EXPECT_EQ(cache.freespaces(), kTopologyCacheFreespaces);
+}
+
+// Two familiar triangles span a 4 × 2 m room, apexes 0.2 m apart at (1.9, 1) and (2.1, 1),
+// their turning angle 2·atan(1/0.9) ≈ 96°. Dilated by R = 0.08 the round dilation leaves a
+// 0.2 − 2R = 0.04 m pinch between the wedges above and below them; the default miter reaches
+// R / cos(48°) ≈ 0.12 m from each apex and closes it; bevelled on the disk's tangent (limit 1)
+// each apex reaches R and the pinch stays open, as the round dilation says.
+TEST(TopologyCache, TheMiterLimitDecidesAPinchBetweenTwoCorners) {
+  const Polygon room = test_scenes::rect(0, 0, 4, 2);
+  const std::vector<Polygon> fixed = {Polygon{{Point(1, 0), Point(1.9, 1), Point(1, 2)}},
+                                      Polygon{{Point(3, 0), Point(3, 2), Point(2.1, 1)}}};
+  const double radius = 0.08;
+  const Point above(2, 1.6), below(2, 0.4);
+  TopologyCache mitered;
+  EXPECT_EQ(check_topology(make_input(room, fixed, {}, radius, above, below, std::nullopt, mitered),
+                           mitered)
+                .verdict,
+            Verdict::kBlockedByFixed);
+  TopologyCache bevelled;
+  bevelled.set_miter_limit(1.0);
+  EXPECT_EQ(check_topology(
+                make_input(room, fixed, {}, radius, above, below, std::nullopt, bevelled), bevelled)
+                .verdict,
+            Verdict::kReachable);
+  // A new limit empties the cache (no dilation of the old limit is reused); bad limits throw.
+  EXPECT_GT(bevelled.dilations(), 0u);
+  bevelled.set_miter_limit(geometry::kMiterLimit);
+  EXPECT_EQ(bevelled.dilations(), 0u);
+  EXPECT_EQ(check_topology(
+                make_input(room, fixed, {}, radius, above, below, std::nullopt, bevelled), bevelled)
+                .verdict,
+            Verdict::kBlockedByFixed);
+  EXPECT_THROW(bevelled.set_miter_limit(0.5), Error);
+  EXPECT_THROW(bevelled.set_miter_limit(std::nan("")), Error);
 }
 
 TEST(TopologyCache, SameErrorsWithAWarmCache) {
