@@ -187,13 +187,12 @@ std::optional<Point> release_point(const geometry::Region& freespace,
     lo = lo.cwiseMin(v);
     hi = hi.cwiseMax(v);
   }
-  const int nx = static_cast<int>(std::floor((hi.x() - lo.x()) / step));
-  const int ny = static_cast<int>(std::floor((hi.y() - lo.y()) / step));
-  if (static_cast<double>(nx + 1) * (ny + 1) > kMaxReleaseCandidates) {
-    throw Error("release point: region '" + region.id + "' needs more than " +
-                std::to_string(kMaxReleaseCandidates) + " grid points at step " +
-                std::to_string(step) + " m");
-  }
+  // A region too large for kMaxReleaseCandidates points at `step` gets a coarser grid.
+  const Point size = hi - lo;
+  step = std::max(step, std::sqrt(size.x() * size.y() / kMaxReleaseCandidates));
+  step = std::max({step, size.x() / kMaxReleaseCandidates, size.y() / kMaxReleaseCandidates});
+  const int nx = static_cast<int>(std::floor(size.x() / step));
+  const int ny = static_cast<int>(std::floor(size.y() / step));
   for (int j = 0; j <= ny; ++j) {
     for (int i = 0; i <= nx; ++i) {
       candidates.emplace_back(lo.x() + i * step, lo.y() + j * step);

@@ -86,8 +86,9 @@ std::optional<Point> disassemble_target(const geometry::Region& freespace,
 // everything known but the carried object (known_clearance) is largest, counted up to `enough`
 // (m); among those reaching it, the one nearest the centroid, so that in the open the paper's
 // point is kept and beside clutter the object is set down as far from it as ℓ allows. The
-// centroid itself is a candidate (ties go to it). nullopt when no candidate lies in F.
-inline constexpr double kMaxReleaseCandidates = 1e6;
+// centroid itself is a candidate (ties go to it). nullopt when no candidate lies in F. A region
+// that would need more than kMaxReleaseCandidates grid points gets a coarser step.
+inline constexpr double kMaxReleaseCandidates = 1e5;
 std::optional<Point> release_point(const geometry::Region& freespace,
                                    const RegionOfInterest& region,
                                    const perception::SemanticMap& map, std::string_view carried,

@@ -187,6 +187,12 @@ TEST(InterfaceLayer, ReleasePointKeepsTheObjectClearestInsideTheRegion) {
 
   const geometry::Region corner{rect(0, 0, 3, 3), {}};
   EXPECT_FALSE(release_point(corner, beside, map, "M1", 0.3, 2.0, step).has_value());
+  // A 10 km region at 5 cm would be 4·10¹⁰ points: the grid coarsens, the answer stays inside.
+  const RegionOfInterest huge{"h", rect(-5000, -5000, 5000, 5000)};
+  const geometry::Region everywhere{rect(-6000, -6000, 6000, 6000), {}};
+  const auto far = release_point(everywhere, huge, map, "M1", 0.3, 2.0, step);
+  ASSERT_TRUE(far.has_value());
+  EXPECT_LE(far->cwiseAbs().maxCoeff(), 5000 - 0.3);
   EXPECT_THROW(release_point(room, beside, map, "M1", 0.3, 2.0, 0), Error);
   EXPECT_THROW(release_point(room, beside, map, "M1", std::nan(""), 2.0, step), Error);
 }
