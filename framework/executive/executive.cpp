@@ -134,6 +134,7 @@ Executive::Executive(const ExecutiveParams& params, const std::vector<RegionOfIn
   controller_.set_convex_fallback(p_.robust.convex_fallback);
   controller_.set_miter_limit(miter_limit());
   topology_cache_.set_miter_limit(miter_limit());
+  drop_dilations_.set_miter_limit(miter_limit());
 }
 
 double Executive::miter_limit() const {
@@ -429,11 +430,7 @@ double Executive::withdraw_distance(const Activity& a, const Pose& pose) const {
   const int samples = static_cast<int>(std::floor(p_.robust.withdraw_max / kWithdrawSample));
   for (int k = 0; k <= samples; ++k) {
     const double s = k * kWithdrawSample;
-    if (known_clearance(map_, pose.x + s * back, a.object) < plan_radius() ||
-        known_clearance(map_, m.center + s * back, a.object) <
-            m.radius + p_.robust.contact_margin) {
-      break;
-    }
+    if (!reverse_clear(m, a.object, pose.x + s * back, m.center + s * back)) break;
     const double c = known_clearance(map_, xc + s * back, a.object);
     if (c >= pair_radius + p_.robust.withdraw_clearance) return s;
     if (c > best) {
@@ -442,6 +439,14 @@ double Executive::withdraw_distance(const Activity& a, const Pose& pose) const {
     }
   }
   return best_s;
+}
+
+// The robot at `robot` and the gripped object `m` (id `object`) moved to `object_at` keep clear
+// of everything known (the robot by the plan radius, the object by the contact margin).
+bool Executive::reverse_clear(const geometry::Disk& m, const std::string& object,
+                              const Point& robot, const Point& object_at) const {
+  return known_clearance(map_, robot, object) >= plan_radius() &&
+         known_clearance(map_, object_at, object) >= m.radius + p_.robust.contact_margin;
 }
 
 // GRASP, robust variant: reverse straight to withdraw_distance(), each step checked again
@@ -462,9 +467,7 @@ Executive::Advance Executive::withdraw(Activity& a, const Pose& pose, double t, 
   const double v = std::min(p_.backoff_speed, (a.withdraw_goal - a.withdrawn) / dt);
   out.u.v = -v;
   const Pose next = reactive::unicycle_step(pose, out.u, dt);
-  const Point moved = m.center + (next.x - pose.x);
-  if (known_clearance(map_, next.x, a.object) < plan_radius() ||
-      known_clearance(map_, moved, a.object) < m.radius + p_.robust.contact_margin) {
+  if (!reverse_clear(m, a.object, next.x, m.center + (next.x - pose.x))) {
     return done(" (blocked behind)");
   }
   a.withdrawn += v * dt;
@@ -948,8 +951,8 @@ Executive::Advance Executive::plan(Activity& a, const Pose& pose) {
       geometry::Region where = res.freespace;
       try {
         const ScopedStopwatch sw(times_.rebuild_s);
-        reactive::DilationCache dilations(miter_limit());
-        where = reactive::build_mapped_space(semantic_input(), radius, center, dilations).freespace;
+        where = reactive::build_mapped_space(semantic_input(), radius, center, drop_dilations_)
+                    .freespace;
       } catch (const reactive::NotInFreespace&) {
       }
       // Points near a drop point a fragment took before are skipped: fragments are what the

@@ -324,6 +324,8 @@ class Executive {
   Advance dock(Activity& a, const Pose& pose, double t, double dt);
   Advance grip(Activity& a, const Pose& pose, double t);
   double withdraw_distance(const Activity& a, const Pose& pose) const;
+  bool reverse_clear(const geometry::Disk& m, const std::string& object, const Point& robot,
+                     const Point& object_at) const;
   Advance withdraw(Activity& a, const Pose& pose, double t, double dt);
   Advance open(Activity& a, double t);
   Advance back_off(Activity& a, const Pose& pose, double t, double dt);
@@ -376,6 +378,7 @@ class Executive {
   // Workspace erosions, obstacle dilations and bound − ∪fixed, kept across topology checks (they
   // change only when a familiar obstacle is localized or the radius changes).
   topology::TopologyCache topology_cache_;
+  reactive::DilationCache drop_dilations_;  // the drop-point search's mapped spaces
   std::optional<Activity> ltl_;  // the current LTL action (suspended while fix_ is not empty)
   std::vector<Activity> fix_;    // Fix-mode actions, back() runs first
   int fix_rounds_ = 0;           // Fix mode entries for the current LTL action

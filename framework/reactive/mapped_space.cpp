@@ -117,19 +117,11 @@ MappedSpace build_mapped_space(const SemanticInput& in, double radius, const Poi
   return build_mapped_space(in, radius, robot, none);
 }
 
-MappedSpace build_mapped_space(const SemanticInput& in, double radius, const Point& robot,
-                               DilationCache& cache) {
-  if (!std::isfinite(radius) || !(radius > 0)) {
-    throw Error("mapped space: dilation radius must be finite and > 0, got " +
-                std::to_string(radius));
-  }
-  check_point(robot, "mapped space: robot position");
-  // The workspace eroded by the radius (conservative).
-  const RegionSet eroded = geometry::erode(in.workspace, radius);
+namespace {
 
-  // Dilated obstacles (§2): familiar with miter joins, unknown with round joins, movable
-  // objects as circumscribed polygons. A representative point of each lies strictly inside
-  // its dilation and identifies the cluster it belongs to.
+// The obstacles of the semantic input dilated (§2), with a representative point of each that
+// lies strictly inside its dilation and identifies the cluster it belongs to.
+struct Dilated {
   enum class Kind { kFamiliar, kUnknown, kMovable };
   struct Source {
     Kind kind;
@@ -140,28 +132,36 @@ MappedSpace build_mapped_space(const SemanticInput& in, double radius, const Poi
   std::vector<Polygon> outers;
   std::vector<RegionSet> dilated;
   bool has_holes = false;
-  std::vector<Polygon> unknown_dilated;
-  auto add_dilation = [&](const RegionSet& d) {
+  std::vector<Polygon> unknown_dilated;  // convex hulls of the unknown fragments' dilations
+
+  void add(const RegionSet& d) {
     for (const Region& r : d) {
       outers.push_back(r.outer);
       has_holes = has_holes || !r.holes.empty();
     }
     dilated.push_back(d);
-  };
+  }
+};
+
+// Familiar with miter joins, unknown with round joins, movable objects as circumscribed
+// polygons, each by radius + kContactSlack.
+Dilated dilate_obstacles(const SemanticInput& in, double radius, DilationCache& cache) {
+  using Kind = Dilated::Kind;
+  Dilated out;
   for (std::size_t i = 0; i < in.familiar.size(); ++i) {
     const std::string what = "familiar obstacle " + std::to_string(i);
     const Polygon p = geometry::validated(in.familiar[i], what.c_str());
-    add_dilation(cache.miter(p, radius + kContactSlack));
-    sources.push_back({Kind::kFamiliar, i, p.vertices.front()});
+    out.add(cache.miter(p, radius + kContactSlack));
+    out.sources.push_back({Kind::kFamiliar, i, p.vertices.front()});
   }
   for (std::size_t i = 0; i < in.unknown.size(); ++i) {
     const std::string what = "unknown obstacle " + std::to_string(i);
     const Polygon p = geometry::validated(in.unknown[i], what.c_str());
     if (!geometry::remove_collinear(p).is_convex()) throw Error(what + " is not convex");
     const RegionSet d = geometry::dilate_round(p, radius + kContactSlack);
-    add_dilation(d);
-    unknown_dilated.push_back(geometry::convex_hull(d.front().outer.vertices));
-    sources.push_back({Kind::kUnknown, i, p.vertices.front()});
+    out.add(d);
+    out.unknown_dilated.push_back(geometry::convex_hull(d.front().outer.vertices));
+    out.sources.push_back({Kind::kUnknown, i, p.vertices.front()});
   }
   for (std::size_t i = 0; i < in.movable.size(); ++i) {
     const Disk& d = in.movable[i];
@@ -170,20 +170,87 @@ MappedSpace build_mapped_space(const SemanticInput& in, double radius, const Poi
     if (!std::isfinite(d.radius) || !(d.radius > 0)) {
       throw Error(what + ": radius must be finite and > 0, got " + std::to_string(d.radius));
     }
-    add_dilation(geometry::to_set(
+    out.add(geometry::to_set(
         geometry::disk_polygon(Disk{d.center, d.radius + radius + kContactSlack})));
-    sources.push_back({Kind::kMovable, i, d.center});
+    out.sources.push_back({Kind::kMovable, i, d.center});
   }
+  return out;
+}
 
-  // Overlapping obstacles are consolidated (§2). A dilated obstacle with a hole (a U closing
-  // on itself) keeps it: then the union is folded region set by region set, holes included.
+// Overlapping obstacles are consolidated (§2). A dilated obstacle with a hole (a U closing on
+// itself) keeps it: then the union is folded region set by region set, holes included.
+RegionSet consolidate(const Dilated& d) {
+  if (!d.has_holes) return geometry::unite_all(d.outers);
   RegionSet obstacles;
-  if (!has_holes) {
-    obstacles = geometry::unite_all(outers);
-  } else {
-    for (const RegionSet& d : dilated) obstacles = geometry::unite(obstacles, d);
+  for (const RegionSet& r : d.dilated) obstacles = geometry::unite(obstacles, r);
+  return obstacles;
+}
+
+// Holes of F_k: one per obstacle cluster. A lone unknown fragment stays a convex obstacle and a
+// lone movable object a disk; every other cluster is a familiar component.
+void add_clusters(MappedSpace& m, const Dilated& d, const SemanticInput& in, double radius,
+                  double sliver) {
+  using Kind = Dilated::Kind;
+  for (const Polygon& hole : m.freespace.holes) {
+    if (hole.area() <= sliver) continue;
+    int n_familiar = 0, n_unknown = 0, n_movable = 0;
+    const Dilated::Source* last = nullptr;
+    for (const Dilated::Source& s : d.sources) {
+      if (!geometry::contains(hole, s.rep)) continue;
+      last = &s;
+      (s.kind == Kind::kFamiliar ? n_familiar : s.kind == Kind::kUnknown ? n_unknown : n_movable)++;
+    }
+    if (n_familiar == 0 && n_unknown + n_movable == 1) {
+      if (last->kind == Kind::kUnknown) {
+        m.unknown.push_back(d.unknown_dilated[last->index]);
+      } else {
+        // The model disk circumscribes the hole (the circumscribed polygon of radius
+        // ρ + r + kContactSlack): the navigation law then keeps the robot outside the very
+        // polygon that the next rebuild's freespace excludes.
+        const Disk& disk = in.movable[last->index];
+        m.movable.push_back(Disk{disk.center, geometry::disk_polygon_circumradius(
+                                                  disk.radius + radius + kContactSlack)});
+      }
+      continue;
+    }
+    m.familiar.push_back(
+        FamiliarComponent{drop_flat_vertices(hole), std::nullopt, n_unknown + n_movable > 0});
   }
-  const RegionSet free = geometry::subtract(eroded, obstacles);
+}
+
+// Pockets between F_k and ∂F_e, each merged into the boundary through its lid.
+void add_pockets(MappedSpace& m, const Dilated& d, double scale, double sliver) {
+  const RegionSet pockets =
+      geometry::subtract(geometry::to_set(m.enclosing), geometry::to_set(m.freespace.outer));
+  for (const Region& r : pockets) {
+    if (r.outer.area() <= sliver) continue;
+    Polygon pocket = drop_flat_vertices(r.outer);
+    auto lid = find_lid(pocket, m.enclosing, kLidTolerance * scale);
+    if (!lid) {
+      throw Error(
+          "mapped space: a pocket of the freespace's convex hull has no edge on the hull "
+          "(internal error; please report the scene)");
+    }
+    const bool curved = std::any_of(d.sources.begin(), d.sources.end(), [&](const auto& s) {
+      return s.kind != Dilated::Kind::kFamiliar && geometry::contains(r.outer, s.rep);
+    });
+    m.familiar.push_back(FamiliarComponent{std::move(pocket), lid, curved});
+  }
+}
+
+}  // namespace
+
+MappedSpace build_mapped_space(const SemanticInput& in, double radius, const Point& robot,
+                               DilationCache& cache) {
+  if (!std::isfinite(radius) || !(radius > 0)) {
+    throw Error("mapped space: dilation radius must be finite and > 0, got " +
+                std::to_string(radius));
+  }
+  check_point(robot, "mapped space: robot position");
+  // The workspace eroded by the radius (conservative), minus the dilated obstacles (§2).
+  const RegionSet eroded = geometry::erode(in.workspace, radius);
+  const Dilated d = dilate_obstacles(in, radius, cache);
+  const RegionSet free = geometry::subtract(eroded, consolidate(d));
 
   MappedSpace m;
   m.radius = radius;
@@ -205,51 +272,8 @@ MappedSpace build_mapped_space(const SemanticInput& in, double radius, const Poi
   m.enclosing = geometry::convex_hull(m.freespace.outer.vertices);
   const double scale = std::sqrt(m.enclosing.area());
   const double sliver = kRelativeSliverArea * scale * scale;
-
-  // Holes of F_k: one per obstacle cluster.
-  for (const Polygon& hole : m.freespace.holes) {
-    if (hole.area() <= sliver) continue;
-    int n_familiar = 0, n_unknown = 0, n_movable = 0;
-    const Source* last = nullptr;
-    for (const Source& s : sources) {
-      if (!geometry::contains(hole, s.rep)) continue;
-      last = &s;
-      (s.kind == Kind::kFamiliar ? n_familiar : s.kind == Kind::kUnknown ? n_unknown : n_movable)++;
-    }
-    if (n_familiar == 0 && n_unknown + n_movable == 1) {
-      if (last->kind == Kind::kUnknown) {
-        m.unknown.push_back(unknown_dilated[last->index]);
-      } else {
-        // The model disk circumscribes the hole (the circumscribed polygon of radius
-        // ρ + r + kContactSlack): the navigation law then keeps the robot outside the very
-        // polygon that the next rebuild's freespace excludes.
-        const Disk& d = in.movable[last->index];
-        m.movable.push_back(
-            Disk{d.center, geometry::disk_polygon_circumradius(d.radius + radius + kContactSlack)});
-      }
-      continue;
-    }
-    m.familiar.push_back(
-        FamiliarComponent{drop_flat_vertices(hole), std::nullopt, n_unknown + n_movable > 0});
-  }
-
-  // Pockets between F_k and ∂F_e, each merged into the boundary through its lid.
-  const RegionSet pockets =
-      geometry::subtract(geometry::to_set(m.enclosing), geometry::to_set(m.freespace.outer));
-  for (const Region& r : pockets) {
-    if (r.outer.area() <= sliver) continue;
-    Polygon pocket = drop_flat_vertices(r.outer);
-    auto lid = find_lid(pocket, m.enclosing, kLidTolerance * scale);
-    if (!lid) {
-      throw Error(
-          "mapped space: a pocket of the freespace's convex hull has no edge on the hull "
-          "(internal error; please report the scene)");
-    }
-    const bool curved = std::any_of(sources.begin(), sources.end(), [&](const Source& s) {
-      return s.kind != Kind::kFamiliar && geometry::contains(r.outer, s.rep);
-    });
-    m.familiar.push_back(FamiliarComponent{std::move(pocket), lid, curved});
-  }
+  add_clusters(m, d, in, radius, sliver);
+  add_pockets(m, d, scale, sliver);
   return m;
 }
 
