@@ -8,6 +8,7 @@
 
 #include "core/error.h"
 #include "core/stopwatch.h"
+#include "executive/path_tracker.h"
 #include "geometry/dilation.h"
 #include "geometry/distance.h"
 #include "reactive/grasp.h"
@@ -553,7 +554,8 @@ Executive::Advance Executive::navigate(Activity& a, const Pose& pose, double t, 
     if (b.kind != Advance::kCommand) return b;
   }
   // The guide's waypoints (robust variant): passed ones are dropped, the next is the law's goal.
-  while (!a.guide.empty() && (center - a.guide.front()).norm() <= p_.guide.reach) {
+  const double reach = a.tracking ? kTrackReach : p_.guide.reach;
+  while (!a.guide.empty() && (center - a.guide.front()).norm() <= reach) {
     a.guide.erase(a.guide.begin());
     a.monitor.reset(t);
   }
@@ -563,9 +565,15 @@ Executive::Advance Executive::navigate(Activity& a, const Pose& pose, double t, 
     controller_.retarget(a.goal);
   }
   if (std::optional<Advance> done = arrive(a, center, rho, t)) return *done;
+  if (a.facing != Facing::kNo) {
+    if (std::optional<Advance> f = face(a, pose, controller_.goal(), t, dt)) return *f;
+  }
   if (auto stuck =
           a.monitor.observe(t, pose, (center - controller_.goal()).norm(), map_.version())) {
     return recover(a, pose, center, *stuck, t, dt);
+  }
+  if (a.tracking) {
+    if (std::optional<Advance> step = track(a, pose, nav, rho, dt)) return *step;
   }
   return command(a, pose, rho, t, dt);
 }
@@ -720,10 +728,58 @@ Executive::Advance Executive::recover(Activity& a, const Pose& pose, const Point
   std::string note;
   if (!plan_guide(a, center, t, note)) {
     out.reason += note;
+    if (std::optional<Advance> n = narrow(a, pose)) return *n;
     return out;
   }
   out.kind = Advance::kRestart;
   return out;
+}
+
+// Robust variant (RobustParams::narrow): the law and every guide failed, yet the topology check
+// finds x* reachable. With every movable object grown by kNarrowSlacks in turn (the fixed
+// obstacles as they are), the first check that separates x* by objects names the objects that
+// narrow the passage below what the law of [7] gets through: Fix mode moves them (paper §IV),
+// then the action plans again. Once per action; nullopt when fixed obstacles alone narrow it.
+std::optional<Executive::Advance> Executive::narrow(Activity& a, const Pose& pose) {
+  if (!p_.robust.narrow || a.narrowed || !a.target) return std::nullopt;
+  a.narrowed = true;
+  const std::optional<std::string> carried = map_.carried();
+  const double rho = carried ? object_radius(*carried) : 0;
+  const double r = plan_radius(a);
+  const double radius = carried ? r + rho + p_.grasp.pair_margin : r;
+  const Point center = carried ? reactive::pair_center(pose.x, pose.psi, rho) : pose.x;
+  const auto& ids = map_.movable_ids();
+  for (double slack : kNarrowSlacks) {
+    std::vector<geometry::Disk> grown = map_.movable();
+    for (geometry::Disk& d : grown) d.radius += slack;
+    topology::TopologyResult res;
+    try {
+      const ScopedStopwatch sw(times_.topology_s);
+      res = topology::check_topology(
+          topology::make_input(map_.workspace(), map_.familiar(), grown, radius, center, *a.target,
+                               std::nullopt, topology_cache_),
+          topology_cache_);
+    } catch (const topology::CenterNotFree&) {
+      return std::nullopt;  // grown objects cover the centre: nothing to tell
+    }
+    ++topology_checks_;
+    if (res.verdict == topology::Verdict::kBlockedByFixed) return std::nullopt;
+    if (res.verdict != topology::Verdict::kBlockedByObjects) continue;
+    Advance out;
+    for (std::size_t i : res.blocking) {
+      if (ids[i] != a.object) out.blocking.push_back(ids[i]);  // GRASP's own object stays
+    }
+    if (out.blocking.empty()) return std::nullopt;
+    out.kind = Advance::kBlocked;
+    out.reason = "objects narrow the passage to x* below what the law got through (grown by " +
+                 fmt(slack) + " m): " + res.reason;
+    ++recoveries_.narrows;
+    a.guides = 0;
+    a.back_outs = 0;
+    a.contact_outs = 0;
+    return out;
+  }
+  return std::nullopt;
 }
 
 // Robust variant (RobustParams::early_dock): within kEarlyDockReach of the approach circle, and
@@ -750,9 +806,58 @@ bool Executive::plan_guide(Activity& a, const Point& center, double t, std::stri
     return false;
   }
   a.guide.assign(path->begin(), path->end() - 1);
+  a.tracking = p_.robust.track;
+  a.facing = p_.robust.face && !a.tracking ? Facing::kPending : Facing::kNo;
   ++a.guides;
   ++recoveries_.guides;
   a.monitor.reset(t);
+  return true;
+}
+
+// Robust variant (RobustParams::face): after a back-up, turn in place toward the law's goal
+// `nav` (kFaceTolerance), as far as the carried object stays clear; then the law resumes.
+std::optional<Executive::Advance> Executive::face(Activity& a, const Pose& pose, const Point& nav,
+                                                  double t, double dt) {
+  Advance out;
+  out.u = reactive::align_command(pose.psi, pose.x, nav, p_.nav);
+  if ((nav - pose.x).norm() <= p_.goal_tolerance ||
+      reactive::aligned(pose.psi, pose.x, nav, kFaceTolerance) ||
+      (map_.carried() && !step_clear(pose, out.u, dt))) {
+    a.facing = Facing::kNo;
+    a.monitor.reset(t);
+    return std::nullopt;
+  }
+  if (a.facing == Facing::kPending) ++recoveries_.faces;
+  a.facing = Facing::kTurning;
+  return out;
+}
+
+// Robust variant (RobustParams::track): the next step along the guide toward `nav`
+// (path_tracker.h) when it keeps the centre in F_k and everything clear; else the law takes over
+// for the rest of this guide.
+std::optional<Executive::Advance> Executive::track(Activity& a, const Pose& pose, const Point& nav,
+                                                   double rho, double dt) {
+  Advance out;
+  out.u = track_command(pose, rho, nav, p_.nav);
+  const Pose next = reactive::unicycle_step(pose, out.u, dt);
+  const Point next_center = rho > 0 ? reactive::pair_center(next.x, next.psi, rho) : next.x;
+  if (reactive::in_freespace(controller_.mapped(), next_center) && step_clear(pose, out.u, dt)) {
+    return out;
+  }
+  a.tracking = false;
+  return std::nullopt;
+}
+
+// The next step of command u keeps the robot, and the object it carries (rigidly: its offset
+// turns with the heading), clear of everything the map knows.
+bool Executive::step_clear(const Pose& pose, const Twist& u, double dt) const {
+  const Pose next = reactive::unicycle_step(pose, u, dt);
+  if (known_clearance(map_, next.x) < p_.robot_radius) return false;
+  if (const std::optional<std::string> carried = map_.carried()) {
+    const geometry::Disk m = *map_.object(*carried);
+    const Point moved = next.x + Eigen::Rotation2Dd(next.psi - pose.psi) * (m.center - pose.x);
+    if (known_clearance(map_, moved) < m.radius) return false;
+  }
   return true;
 }
 
@@ -806,6 +911,7 @@ Executive::Advance Executive::back_out(Activity& a, const Pose& pose, double t, 
   const double rho = carried ? object_radius(*carried) : 0;
   auto finish_backing = [&] {
     a.backing = false;
+    a.facing = p_.robust.face ? Facing::kPending : Facing::kNo;
     a.planned = false;
     a.built = false;
     a.monitor.reset(t);
@@ -822,15 +928,8 @@ Executive::Advance Executive::back_out(Activity& a, const Pose& pose, double t, 
   };
   const double here = known_clearance(map_, centre(pose), carried.value_or(""));
   auto usable = [&](int k, bool away) {
+    if (!step_clear(pose, moves[k], dt)) return false;
     const Pose next = reactive::unicycle_step(pose, moves[k], dt);
-    if (known_clearance(map_, next.x) < p_.robot_radius) return false;
-    if (carried) {
-      const geometry::Disk m = *map_.object(*carried);
-      const Point offset = m.center - pose.x;  // rigid: rotate the offset with the heading
-      const double turn = next.psi - pose.psi;
-      const Point moved = next.x + Eigen::Rotation2Dd(turn) * offset;
-      if (known_clearance(map_, moved) < m.radius) return false;
-    }
     return !away || known_clearance(map_, centre(next), carried.value_or("")) > here;
   };
   if (a.backing_dir < 0 || !usable(a.backing_dir, false)) {
@@ -921,6 +1020,8 @@ RecoveryCounts Executive::recoveries() const {
   return c;
 }
 
+// The action's plan (paper §IV, §V): x* and the topology check's verdict; GRASP and
+// DISASSEMBLE have their own.
 Executive::Advance Executive::plan(Activity& a, const Pose& pose) {
   if (a.kind == Kind::kGrasp) return plan_grasp(a, pose);
   Advance out;
@@ -929,54 +1030,7 @@ Executive::Advance Executive::plan(Activity& a, const Pose& pose) {
   const double rho = carried ? object_radius(*carried) : 0;
   const double radius = carried ? r + rho + p_.grasp.pair_margin : r;
   const Point center = carried ? reactive::pair_center(pose.x, pose.psi, rho) : pose.x;
-  auto remember = [&] {
-    a.planned = true;
-    a.plan_familiar = map_.familiar().size();
-    a.plan_movable = map_.movable();
-    a.plan_carried = carried;
-  };
-
-  if (a.kind == Kind::kDisassemble) {
-    // Paper §V-B: x* is the midpoint of an edge of the pair's freespace F; kept while it stays
-    // in F so the target does not jump as the map grows. Robust variant: the nearest point of F
-    // where the object can be dropped clear of everything (drop_clear), when there is one.
-    const topology::TopologyResult res = timed_check(radius, center, center);
-    ++topology_checks_;
-    if (p_.robust.drop && (!a.target || !geometry::contains(res.freespace, *a.target) ||
-                           !drop_clear(*a.target, rho))) {
-      // Searched in the pair's mapped freespace F_k (the visible unknown fragments included, as
-      // the reactive controller will see it); F when the centre is not in F_k.
-      const double need =
-          kDropClearance * (p_.robot_radius + max_object_radius()) + kDropSlack - radius;
-      geometry::Region where = res.freespace;
-      try {
-        const ScopedStopwatch sw(times_.rebuild_s);
-        where = reactive::build_mapped_space(semantic_input(), radius, center, drop_dilations_)
-                    .freespace;
-      } catch (const reactive::NotInFreespace&) {
-      }
-      // Points near a drop point a fragment took before are skipped: fragments are what the
-      // sensor sees now, so a point can look clear from one side and not from another.
-      const double avoid = 2 * (p_.robot_radius + max_object_radius());
-      auto accept = [&](const Point& q) {
-        for (const Point& x : a.rejected_drops) {
-          if ((q - x).norm() < avoid) return false;
-        }
-        return drop_clear(q, rho, kDropSlack);
-      };
-      a.target = nearest_clear_point(where, center, need, accept, p_.guide);
-    }
-    if (!a.target || !geometry::contains(res.freespace, *a.target)) {
-      a.target = disassemble_target(res.freespace, map_, a.object, regions_, radius);
-      if (!a.target) {
-        out.kind = Advance::kStuck;
-        out.reason = "the pair's freespace has no edge to disassemble the object toward";
-        return out;
-      }
-    }
-    remember();
-    return out;
-  }
+  if (a.kind == Kind::kDisassemble) return plan_disassemble(a, radius, center, rho);
 
   const Point target = region_target(region(a.region));
   const topology::TopologyResult res = timed_check(radius, center, target);
@@ -992,13 +1046,13 @@ Executive::Advance Executive::plan(Activity& a, const Pose& pose) {
                                kReleaseStep)) {
       a.target = *p;
       ++recoveries_.release_points;
-      remember();
+      remember_plan(a);
       return out;
     }
   }
   switch (res.verdict) {
     case topology::Verdict::kReachable:
-      remember();
+      remember_plan(a);
       return out;
     case topology::Verdict::kBlockedByFixed:
       if (!a.bare && plan_radius(a) > p_.robot_radius) {
@@ -1017,6 +1071,63 @@ Executive::Advance Executive::plan(Activity& a, const Pose& pose) {
       return out;
   }
   return out;
+}
+
+void Executive::remember_plan(Activity& a) const {
+  a.planned = true;
+  a.plan_familiar = map_.familiar().size();
+  a.plan_movable = map_.movable();
+  a.plan_carried = map_.carried();
+}
+
+// DISASSEMBLE's x* (paper §V-B): the midpoint of an edge of the pair's freespace F, kept while it
+// stays in F so the target does not jump as the map grows. Robust variant: the nearest point of
+// F where the object can be dropped clear of everything (drop_clear), when there is one.
+Executive::Advance Executive::plan_disassemble(Activity& a, double radius, const Point& center,
+                                               double rho) {
+  Advance out;
+  const topology::TopologyResult res = timed_check(radius, center, center);
+  ++topology_checks_;
+  if (p_.robust.drop &&
+      (!a.target || !geometry::contains(res.freespace, *a.target) || !drop_clear(*a.target, rho))) {
+    a.target = drop_point(a, res.freespace, radius, center, rho);
+  }
+  if (!a.target || !geometry::contains(res.freespace, *a.target)) {
+    a.target = disassemble_target(res.freespace, map_, a.object, regions_, radius);
+    if (!a.target) {
+      out.kind = Advance::kStuck;
+      out.reason = "the pair's freespace has no edge to disassemble the object toward";
+      return out;
+    }
+  }
+  remember_plan(a);
+  return out;
+}
+
+// The robust variant's drop point: searched in the pair's mapped freespace F_k (the visible
+// unknown fragments included, as the reactive controller will see it); in F when the centre is
+// not in F_k.
+std::optional<Point> Executive::drop_point(const Activity& a, const geometry::Region& free,
+                                           double radius, const Point& center, double rho) {
+  const double need =
+      kDropClearance * (p_.robot_radius + max_object_radius()) + kDropSlack - radius;
+  geometry::Region where = free;
+  try {
+    const ScopedStopwatch sw(times_.rebuild_s);
+    where =
+        reactive::build_mapped_space(semantic_input(), radius, center, drop_dilations_).freespace;
+  } catch (const reactive::NotInFreespace&) {
+  }
+  // Points near a drop point a fragment took before are skipped: fragments are what the sensor
+  // sees now, so a point can look clear from one side and not from another.
+  const double avoid = 2 * (p_.robot_radius + max_object_radius());
+  auto accept = [&](const Point& q) {
+    for (const Point& x : a.rejected_drops) {
+      if ((q - x).norm() < avoid) return false;
+    }
+    return drop_clear(q, rho, kDropSlack);
+  };
+  return nearest_clear_point(where, center, need, accept, p_.guide);
 }
 
 Executive::Advance Executive::plan_grasp(Activity& a, const Pose& pose) {
@@ -1080,10 +1191,7 @@ Executive::Advance Executive::plan_grasp(Activity& a, const Pose& pose) {
       return out;
     }
   }
-  a.planned = true;
-  a.plan_familiar = map_.familiar().size();
-  a.plan_movable = map_.movable();
-  a.plan_carried = map_.carried();
+  remember_plan(a);
   return out;
 }
 

@@ -77,6 +77,11 @@ inline constexpr double kDropSlack = 0.15;
 // two convex pieces of a cluster meet, LF(y) shrinks to a wedge at y and every goal beyond it
 // projects onto y itself: the robot stands still whatever its goal.
 inline constexpr double kContactClearance = 0.02;
+// rad: RobustParams::face turns until the bearing error to the law's goal is below this.
+inline constexpr double kFaceTolerance = 0.05;
+// m: RobustParams::narrow grows every movable object by these in turn, the first check that
+// says objects separate x* names them.
+inline constexpr double kNarrowSlacks[] = {0.05, 0.1, 0.2};
 
 struct RobustParams {
   // When the progress monitor fires, follow waypoints of a path in the known freespace
@@ -140,6 +145,22 @@ struct RobustParams {
   // object's dilation, a few centimetres along the circle from that point (measured: 0.16 m on
   // a corpus instance, four guides spent). Before the guide.
   bool early_dock = true;
+  // After a back-up, turn in place toward the law's goal (kFaceTolerance) before the law
+  // resumes: the unicycle law of [7] drives backward toward a goal behind the robot, and a
+  // back-up ends facing away from where it came, so the law drove the robot straight back onto
+  // the rest point it had backed out of (measured: 9 of the variants sweep's 18 failures completed
+  // with it alone, 2 of its successes were lost).
+  bool face = true;
+  // When the law and every guide failed although the topology check finds x* reachable, the
+  // objects that narrow the passage (found with every object grown by kNarrowSlacks) are
+  // moved by Fix mode, as if they blocked it: a robot that released an object in a pocket and
+  // stands behind it has a gap of about 10 cm past it, which the law does not get through.
+  bool narrow = true;
+  // Guide paths are followed straight, segment by segment (path_tracker.h), every step checked
+  // against everything known, instead of as goals of the law: in a familiar obstacle's concavity
+  // the law drove the robot back to the same point whatever waypoint it was given (measured).
+  // The law takes over where a tracked step would not be clear.
+  bool track = true;
   double withdraw_clearance = 0.25;  // m beyond the pair's dilation radius
   double withdraw_max = 1.0;         // m of straight reverse travel at most
   int max_back_outs = 4;             // per action
@@ -156,6 +177,8 @@ struct RecoveryCounts {
   int withdrawals = 0;     // grasps that backed the pair out of a narrow place
   int release_points = 0;  // RELEASEs sent elsewhere in the region, its centroid cut off
   int early_docks = 0;     // GRASPs docked from where the robot stalled beside the object
+  int faces = 0;           // turns toward the goal after a back-up
+  int narrows = 0;         // Fix-mode entries for objects narrowing a passage the law failed
 };
 
 struct ExecutiveParams {
@@ -259,6 +282,7 @@ class Executive {
  private:
   enum class Kind { kMove, kGrasp, kRelease, kDisassemble };
   enum class Phase { kNavigate, kAlign, kDock, kGrip, kWithdraw, kOpen, kBackOff };
+  enum class Facing { kNo, kPending, kTurning };  // RobustParams::face
 
   struct Activity {
     Kind kind = Kind::kMove;
@@ -297,9 +321,12 @@ class Executive {
     double backing_travel = 0;  // m moved (arc length of the centre) in this back-up
     int backing_dir = -1;       // index into the back-up moves, -1: choose one
     bool convex_all = false;
-    int contact_outs = 0;        // back-ups off ∂F_k when the monitor fired (kContactClearance)
-    bool guide_pending = false;  // plan a guide at the next rebuild (after such a back-up)
-    int retargets = 0;           // drop points chosen again after a fragment took one
+    int contact_outs = 0;         // back-ups off ∂F_k when the monitor fired (kContactClearance)
+    bool narrowed = false;        // RobustParams::narrow was tried for this action
+    bool tracking = false;        // the guide is followed straight (RobustParams::track)
+    Facing facing = Facing::kNo;  // turn toward the law's goal first (RobustParams::face)
+    bool guide_pending = false;   // plan a guide at the next rebuild (after such a back-up)
+    int retargets = 0;            // drop points chosen again after a fragment took one
     std::vector<Point> rejected_drops;
     std::string name() const;
   };
@@ -330,6 +357,15 @@ class Executive {
   Advance open(Activity& a, double t);
   Advance back_off(Activity& a, const Pose& pose, double t, double dt);
   Advance navigate(Activity& a, const Pose& pose, double t, double dt);
+  std::optional<Advance> narrow(Activity& a, const Pose& pose);
+  void remember_plan(Activity& a) const;
+  Advance plan_disassemble(Activity& a, double radius, const Point& center, double rho);
+  std::optional<Point> drop_point(const Activity& a, const geometry::Region& free, double radius,
+                                  const Point& center, double rho);
+  bool step_clear(const Pose& pose, const Twist& u, double dt) const;
+  std::optional<Advance> track(Activity& a, const Pose& pose, const Point& nav, double rho,
+                               double dt);
+  std::optional<Advance> face(Activity& a, const Pose& pose, const Point& nav, double t, double dt);
   Advance plan(Activity& a, const Pose& pose);
   Advance plan_grasp(Activity& a, const Pose& pose);
   Advance rebuild(Activity& a, double radius, const Point& center, double t);

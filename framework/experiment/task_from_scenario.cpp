@@ -62,6 +62,9 @@ executive::TaskSpec task_spec(const scenario::Scenario& s) {
   e.robust.release_point = s.controller.release_point;
   e.robust.bevel = s.controller.bevel;
   e.robust.early_dock = s.controller.early_dock;
+  e.robust.face = s.controller.face;
+  e.robust.narrow = s.controller.narrow;
+  e.robust.track = s.controller.track;
   if (s.controller.variant == "paper") e.robust.contact_margin = 0;
   e.max_ltl_actions = s.simulation.max_actions;
   return t;

@@ -89,6 +89,8 @@ void outcome_fields(const TrialRecord& r, std::vector<std::string>& f) {
   f.push_back(integer(o.recoveries.withdrawals));
   f.push_back(integer(o.recoveries.release_points));
   f.push_back(integer(o.recoveries.early_docks));
+  f.push_back(integer(o.recoveries.faces));
+  f.push_back(integer(o.recoveries.narrows));
   f.push_back(integer(o.collisions));
   f.push_back(exact(o.min_clearance_m));
   f.push_back(integer(o.queries));
@@ -147,6 +149,8 @@ const std::vector<std::string>& trial_columns() {
                                                    "withdrawals",
                                                    "release_points",
                                                    "early_docks",
+                                                   "faces",
+                                                   "narrows",
                                                    "collisions",
                                                    "min_clearance_m",
                                                    "queries",

@@ -66,6 +66,9 @@ struct Controller {
   bool release_point = true;    // robust only: release where in the region it is clearest
   bool bevel = true;            // robust only: familiar corners bevelled on the disk's tangent
   bool early_dock = true;       // robust only: dock from where the robot stalls beside the object
+  bool face = true;             // robust only: turn toward the goal after a back-up
+  bool narrow = true;           // robust only: Fix mode for objects narrowing a failed passage
+  bool track = true;            // robust only: follow guide paths straight, segment by segment
 };
 
 // The robust variant's switches by key (scenario files; the ablation methods "rearm-no<key>").
@@ -78,7 +81,9 @@ inline constexpr RobustSwitch kRobustSwitches[] = {
     {"back_out", &Controller::back_out}, {"restore", &Controller::restore},
     {"drop", &Controller::drop},         {"early_release", &Controller::early_release},
     {"withdraw", &Controller::withdraw}, {"release_point", &Controller::release_point},
-    {"bevel", &Controller::bevel},       {"early_dock", &Controller::early_dock}};
+    {"bevel", &Controller::bevel},       {"early_dock", &Controller::early_dock},
+    {"face", &Controller::face},         {"narrow", &Controller::narrow},
+    {"track", &Controller::track}};
 
 // Sets the variant ("robust" or "paper") and every switch: all on, or all off.
 inline void set_variant(Controller& c, const std::string& variant) {

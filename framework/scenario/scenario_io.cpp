@@ -74,11 +74,29 @@ std::vector<Object> read_objects(Reader& r, const YAML::Node& n) {
 }
 
 void read_controller(Reader& r, const YAML::Node& n, Controller& c) {
-  const Fields f(
-      r, n, "controller",
-      {"p", "epsilon", "mu1", "mu2", "k_v", "k_omega", "goal_tolerance", "fragment_tolerance",
-       "variant", "guide", "convex_fallback", "back_out", "restore", "drop", "early_release",
-       "withdraw", "release_point", "bevel", "early_dock"});
+  const Fields f(r, n, "controller",
+                 {"p",
+                  "epsilon",
+                  "mu1",
+                  "mu2",
+                  "k_v",
+                  "k_omega",
+                  "goal_tolerance",
+                  "fragment_tolerance",
+                  "variant",
+                  "guide",
+                  "convex_fallback",
+                  "back_out",
+                  "restore",
+                  "drop",
+                  "early_release",
+                  "withdraw",
+                  "release_point",
+                  "bevel",
+                  "early_dock",
+                  "face",
+                  "narrow",
+                  "track"});
   struct Field {
     const char* key;
     double* value;
