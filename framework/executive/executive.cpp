@@ -525,17 +525,13 @@ Executive::Advance Executive::back_off(Activity& a, const Pose& pose, double t, 
 }
 
 Executive::Advance Executive::navigate(Activity& a, const Pose& pose, double t, double dt) {
-  const double r = plan_radius(a);
-  const std::optional<std::string> carried = map_.carried();
-  const double rho = carried ? object_radius(*carried) : 0;
-  const double radius = carried ? r + rho + p_.grasp.pair_margin : r;
-  const Point center = carried ? reactive::pair_center(pose.x, pose.psi, rho) : pose.x;
+  const auto [rho, radius, center] = moving(a, pose);
   if (a.backing) return back_out(a, pose, t, dt);
 
   // A grasp approach point chosen earlier may have lost its clearance to a newly seen unknown
   // fragment (the topology knowledge is unchanged then).
   if (a.planned && a.kind == Kind::kGrasp && a.built && a.built_version != map_.version() &&
-      known_clearance(map_, *a.target) < r) {
+      known_clearance(map_, *a.target) < plan_radius(a)) {
     a.planned = false;
   }
   if (!a.planned || knowledge_changed(a)) {
@@ -743,11 +739,7 @@ Executive::Advance Executive::recover(Activity& a, const Pose& pose, const Point
 std::optional<Executive::Advance> Executive::narrow(Activity& a, const Pose& pose) {
   if (!p_.robust.narrow || a.narrowed || !a.target) return std::nullopt;
   a.narrowed = true;
-  const std::optional<std::string> carried = map_.carried();
-  const double rho = carried ? object_radius(*carried) : 0;
-  const double r = plan_radius(a);
-  const double radius = carried ? r + rho + p_.grasp.pair_margin : r;
-  const Point center = carried ? reactive::pair_center(pose.x, pose.psi, rho) : pose.x;
+  const auto [rho, radius, center] = moving(a, pose);
   const auto& ids = map_.movable_ids();
   for (double slack : kNarrowSlacks) {
     std::vector<geometry::Disk> grown = map_.movable();
@@ -822,7 +814,7 @@ std::optional<Executive::Advance> Executive::face(Activity& a, const Pose& pose,
   out.u = reactive::align_command(pose.psi, pose.x, nav, p_.nav);
   if ((nav - pose.x).norm() <= p_.goal_tolerance ||
       reactive::aligned(pose.psi, pose.x, nav, kFaceTolerance) ||
-      (map_.carried() && !step_clear(pose, out.u, dt))) {
+      (map_.carried() && !step_clear(pose, reactive::unicycle_step(pose, out.u, dt)))) {
     a.facing = Facing::kNo;
     a.monitor.reset(t);
     return std::nullopt;
@@ -841,17 +833,16 @@ std::optional<Executive::Advance> Executive::track(Activity& a, const Pose& pose
   out.u = track_command(pose, rho, nav, p_.nav);
   const Pose next = reactive::unicycle_step(pose, out.u, dt);
   const Point next_center = rho > 0 ? reactive::pair_center(next.x, next.psi, rho) : next.x;
-  if (reactive::in_freespace(controller_.mapped(), next_center) && step_clear(pose, out.u, dt)) {
+  if (reactive::in_freespace(controller_.mapped(), next_center) && step_clear(pose, next)) {
     return out;
   }
   a.tracking = false;
   return std::nullopt;
 }
 
-// The next step of command u keeps the robot, and the object it carries (rigidly: its offset
+// The step from `pose` to `next` keeps the robot, and the object it carries (rigidly: its offset
 // turns with the heading), clear of everything the map knows.
-bool Executive::step_clear(const Pose& pose, const Twist& u, double dt) const {
-  const Pose next = reactive::unicycle_step(pose, u, dt);
+bool Executive::step_clear(const Pose& pose, const Pose& next) const {
   if (known_clearance(map_, next.x) < p_.robot_radius) return false;
   if (const std::optional<std::string> carried = map_.carried()) {
     const geometry::Disk m = *map_.object(*carried);
@@ -928,8 +919,8 @@ Executive::Advance Executive::back_out(Activity& a, const Pose& pose, double t, 
   };
   const double here = known_clearance(map_, centre(pose), carried.value_or(""));
   auto usable = [&](int k, bool away) {
-    if (!step_clear(pose, moves[k], dt)) return false;
     const Pose next = reactive::unicycle_step(pose, moves[k], dt);
+    if (!step_clear(pose, next)) return false;
     return !away || known_clearance(map_, centre(next), carried.value_or("")) > here;
   };
   if (a.backing_dir < 0 || !usable(a.backing_dir, false)) {
@@ -993,6 +984,16 @@ double Executive::plan_radius(const Activity& a) const {
   return a.bare ? p_.robot_radius : plan_radius();
 }
 
+// What the law moves for action a: the robot (radius plan_radius(a), centre x), or with an
+// object in the gripper the robot–object pair (radius + ρ + pair_margin, centre x_c).
+Executive::Moving Executive::moving(const Activity& a, const Pose& pose) const {
+  const std::optional<std::string> carried = map_.carried();
+  const double r = plan_radius(a);
+  if (!carried) return {0, r, pose.x};
+  const double rho = object_radius(*carried);
+  return {rho, r + rho + p_.grasp.pair_margin, reactive::pair_center(pose.x, pose.psi, rho)};
+}
+
 // Robust variant: the mission is accepting, but Fix mode moved objects that LTL actions had
 // placed (the formula's "eventually release" held when they were released, the task's end state
 // has them elsewhere). Each is released into its region again as an interface-layer action, at
@@ -1025,11 +1026,8 @@ RecoveryCounts Executive::recoveries() const {
 Executive::Advance Executive::plan(Activity& a, const Pose& pose) {
   if (a.kind == Kind::kGrasp) return plan_grasp(a, pose);
   Advance out;
-  const double r = plan_radius(a);
   const std::optional<std::string> carried = map_.carried();
-  const double rho = carried ? object_radius(*carried) : 0;
-  const double radius = carried ? r + rho + p_.grasp.pair_margin : r;
-  const Point center = carried ? reactive::pair_center(pose.x, pose.psi, rho) : pose.x;
+  const auto [rho, radius, center] = moving(a, pose);
   if (a.kind == Kind::kDisassemble) return plan_disassemble(a, radius, center, rho);
 
   const Point target = region_target(region(a.region));

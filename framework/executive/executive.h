@@ -362,7 +362,13 @@ class Executive {
   Advance plan_disassemble(Activity& a, double radius, const Point& center, double rho);
   std::optional<Point> drop_point(const Activity& a, const geometry::Region& free, double radius,
                                   const Point& center, double rho);
-  bool step_clear(const Pose& pose, const Twist& u, double dt) const;
+  bool step_clear(const Pose& pose, const Pose& next) const;
+  struct Moving {
+    double rho;     // ρ of the carried object, 0 for the robot alone
+    double radius;  // the law's dilation radius
+    Point center;   // the controlled point
+  };
+  Moving moving(const Activity& a, const Pose& pose) const;
   std::optional<Advance> track(Activity& a, const Pose& pose, const Point& nav, double rho,
                                double dt);
   std::optional<Advance> face(Activity& a, const Pose& pose, const Point& nav, double t, double dt);
