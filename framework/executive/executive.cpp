@@ -3,6 +3,7 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <string>
 #include <utility>
 
@@ -745,20 +746,26 @@ std::optional<Executive::Advance> Executive::narrow(Activity& a, const Pose& pos
     std::vector<geometry::Disk> grown = map_.movable();
     for (geometry::Disk& d : grown) d.radius += slack;
     topology::TopologyResult res;
+    std::vector<std::size_t> blocking;
     try {
       const ScopedStopwatch sw(times_.topology_s);
       res = topology::check_topology(
           topology::make_input(map_.workspace(), map_.familiar(), grown, radius, center, *a.target,
                                std::nullopt, topology_cache_),
           topology_cache_);
+      ++topology_checks_;
+      if (res.verdict == topology::Verdict::kBlockedByFixed) return std::nullopt;
+      if (res.verdict != topology::Verdict::kBlockedByObjects) continue;
+      blocking = res.blocking;
     } catch (const topology::CenterNotFree&) {
-      return std::nullopt;  // grown objects cover the centre: nothing to tell
+      // Grown objects cover the centre: those within `slack` of the robot's dilation squeeze it.
+      for (std::size_t i = 0; i < grown.size(); ++i) {
+        if ((grown[i].center - center).norm() < grown[i].radius + radius) blocking.push_back(i);
+      }
+      res.reason = "the robot's centre lies within " + fmt(slack) + " m of their dilations";
     }
-    ++topology_checks_;
-    if (res.verdict == topology::Verdict::kBlockedByFixed) return std::nullopt;
-    if (res.verdict != topology::Verdict::kBlockedByObjects) continue;
     Advance out;
-    for (std::size_t i : res.blocking) {
+    for (std::size_t i : blocking) {
       if (ids[i] != a.object) out.blocking.push_back(ids[i]);  // GRASP's own object stays
     }
     if (out.blocking.empty()) return std::nullopt;
@@ -888,6 +895,8 @@ Executive::Advance Executive::start_back_out(Activity& a, const Pose& pose, cons
   a.backing = true;
   a.backing_travel = 0;
   a.backing_dir = -1;
+  a.escape_chosen = false;
+  a.escape.reset();
   return back_out(a, pose, t, dt);
 }
 
@@ -910,6 +919,18 @@ Executive::Advance Executive::back_out(Activity& a, const Pose& pose, double t, 
     return out;
   };
   if (a.backing_travel >= p_.robust.back_out_step) return finish_backing();
+  if (!carried && p_.robust.escape) {
+    if (!a.escape_chosen) {
+      a.escape_chosen = true;
+      a.escape = escape_line(pose.x);
+    }
+    if (a.escape) {
+      const std::optional<Twist> u = escape_step(a, pose, dt);
+      if (!u) return finish_backing();
+      out.u = *u;
+      return out;
+    }
+  }
   const double v = std::min(p_.backoff_speed, (p_.robust.back_out_step - a.backing_travel) / dt);
   const double w = carried ? std::min(p_.nav.omega_max, v / rho) : 0;
   const Twist moves[] = {{-v, 0}, {v, 0}, {0, w}, {0, -w}};
@@ -941,6 +962,51 @@ Executive::Advance Executive::back_out(Activity& a, const Pose& pose, double t, 
   out.u = moves[a.backing_dir];
   a.backing_travel += (std::abs(out.u.v) + rho * std::abs(out.u.omega)) * dt;
   return out;
+}
+
+// Robust variant (RobustParams::escape): along each of kEscapeHeadings straight lines from x,
+// sampled every kEscapeSample up to back_out_step while nothing known comes closer than r (or
+// than it is at x, if x is closer), the clearest sample; the clearest of all, if it is clearer
+// than x: its heading and distance.
+std::optional<Executive::Escape> Executive::escape_line(const Point& x) const {
+  const double here = known_clearance(map_, x);
+  const double floor = std::min(p_.robot_radius, here);
+  const double step = p_.robust.back_out_step;
+  std::optional<Escape> best;
+  double best_clearance = here;
+  for (int k = 0; k < kEscapeHeadings; ++k) {
+    const double theta = 2 * std::numbers::pi * k / kEscapeHeadings;
+    const Point d(std::cos(theta), std::sin(theta));
+    for (double s = kEscapeSample; s <= step + 1e-9; s += kEscapeSample) {
+      const double c = known_clearance(map_, x + s * d);
+      if (c < floor) break;
+      if (c > best_clearance) {
+        best_clearance = c;
+        best = Escape{theta, s};
+      }
+    }
+  }
+  return best;
+}
+
+// Turn in place to the escape heading or its reverse (the shorter turn), then drive along it
+// for the escape's distance; each step keeps the robot no closer to anything known than r (or
+// than it is now).
+std::optional<Twist> Executive::escape_step(Activity& a, const Pose& pose, double dt) {
+  const Escape& e = *a.escape;
+  const double ahead = reactive::wrap_angle(e.heading - pose.psi);
+  const double sign = std::abs(ahead) <= std::numbers::pi / 2 ? 1.0 : -1.0;
+  const double error = sign > 0 ? ahead : reactive::wrap_angle(ahead + std::numbers::pi);
+  const double omega = std::clamp(kTrackTurnGain * error, -p_.nav.omega_max, p_.nav.omega_max);
+  if (std::abs(error) > kFaceTolerance) return Twist{0, omega};
+  if (a.backing_travel >= e.distance) return std::nullopt;
+  const double v = sign * std::min(p_.backoff_speed, (e.distance - a.backing_travel) / dt);
+  const Twist u{v, omega};
+  const Pose next = reactive::unicycle_step(pose, u, dt);
+  const double floor = std::min(p_.robot_radius, known_clearance(map_, pose.x));
+  if (known_clearance(map_, next.x) < floor) return std::nullopt;
+  a.backing_travel += std::abs(v) * dt;
+  return u;
 }
 
 // The exact freespace of the pair once `object` is gripped (the object carried, radius

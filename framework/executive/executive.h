@@ -82,6 +82,10 @@ inline constexpr double kFaceTolerance = 0.05;
 // m: RobustParams::narrow grows every movable object by these in turn, the first check that
 // says objects separate x* names them.
 inline constexpr double kNarrowSlacks[] = {0.05, 0.1, 0.2};
+// Headings RobustParams::escape tries, evenly spaced, and the m between the clearance samples
+// along each straight escape.
+inline constexpr int kEscapeHeadings = 32;
+inline constexpr double kEscapeSample = 0.02;
 
 struct RobustParams {
   // When the progress monitor fires, follow waypoints of a path in the known freespace
@@ -161,6 +165,14 @@ struct RobustParams {
   // the law drove the robot back to the same point whatever waypoint it was given (measured).
   // The law takes over where a tracked step would not be clear.
   bool track = true;
+  // A back-up of the robot alone (no object carried) goes along the clearest straight line of
+  // back_out_step: of kEscapeHeadings directions, the one whose straight move stays clear of
+  // everything known and ends farthest from it; the robot turns in place to it (or to its
+  // reverse, whichever turn is shorter) first. The paper's heading alone offers two directions,
+  // both into the walls when the law has pressed the robot into the apex of a concavity
+  // (measured: the robot stayed there through four back-ups). Turning in place keeps a disk
+  // robot where it is.
+  bool escape = true;
   double withdraw_clearance = 0.25;  // m beyond the pair's dilation radius
   double withdraw_max = 1.0;         // m of straight reverse travel at most
   int max_back_outs = 4;             // per action
@@ -284,6 +296,11 @@ class Executive {
   enum class Phase { kNavigate, kAlign, kDock, kGrip, kWithdraw, kOpen, kBackOff };
   enum class Facing { kNo, kPending, kTurning };  // RobustParams::face
 
+  // A straight back-up of the robot alone (RobustParams::escape).
+  struct Escape {
+    double heading;   // rad
+    double distance;  // m
+  };
   struct Activity {
     Kind kind = Kind::kMove;
     std::string object;
@@ -318,8 +335,10 @@ class Executive {
     int guides = 0;
     int back_outs = 0;
     bool backing = false;
-    double backing_travel = 0;  // m moved (arc length of the centre) in this back-up
-    int backing_dir = -1;       // index into the back-up moves, -1: choose one
+    double backing_travel = 0;     // m moved (arc length of the centre) in this back-up
+    int backing_dir = -1;          // index into the back-up moves, -1: choose one
+    bool escape_chosen = false;    // RobustParams::escape: line chosen for this back-up
+    std::optional<Escape> escape;  // the line driven along (none: back_out's moves)
     bool convex_all = false;
     int contact_outs = 0;         // back-ups off ∂F_k when the monitor fired (kContactClearance)
     bool narrowed = false;        // RobustParams::narrow was tried for this action
@@ -378,6 +397,11 @@ class Executive {
   Advance recover(Activity& a, const Pose& pose, const Point& center, const std::string& why,
                   double t, double dt);
   Advance back_out(Activity& a, const Pose& pose, double t, double dt);
+  // RobustParams::escape: the back-up of the robot alone along the clearest straight line from
+  // x (none when no straight move gains clearance), and its next command (none when the next
+  // step would not stay clear or the line is driven).
+  std::optional<Escape> escape_line(const Point& x) const;
+  std::optional<Twist> escape_step(Activity& a, const Pose& pose, double dt);
   // A back-up (back_out); `contact`: one of the monitor's back-ups off ∂F_k (kContactClearance,
   // bounded by Activity::contact_outs), outside the budget of back-ups out of a dilation.
   Advance start_back_out(Activity& a, const Pose& pose, const std::string& why, double t, double dt,

@@ -65,6 +65,7 @@ executive::TaskSpec task_spec(const scenario::Scenario& s) {
   e.robust.face = s.controller.face;
   e.robust.narrow = s.controller.narrow;
   e.robust.track = s.controller.track;
+  e.robust.escape = s.controller.escape;
   if (s.controller.variant == "paper") e.robust.contact_margin = 0;
   e.max_ltl_actions = s.simulation.max_actions;
   return t;

@@ -69,6 +69,7 @@ struct Controller {
   bool face = true;             // robust only: turn toward the goal after a back-up
   bool narrow = true;           // robust only: Fix mode for objects narrowing a failed passage
   bool track = true;            // robust only: follow guide paths straight, segment by segment
+  bool escape = true;           // robust only: back up along the clearest straight line
 };
 
 // The robust variant's switches by key (scenario files; the ablation methods "rearm-no<key>").
@@ -83,7 +84,7 @@ inline constexpr RobustSwitch kRobustSwitches[] = {
     {"withdraw", &Controller::withdraw}, {"release_point", &Controller::release_point},
     {"bevel", &Controller::bevel},       {"early_dock", &Controller::early_dock},
     {"face", &Controller::face},         {"narrow", &Controller::narrow},
-    {"track", &Controller::track}};
+    {"track", &Controller::track},       {"escape", &Controller::escape}};
 
 // Sets the variant ("robust" or "paper") and every switch: all on, or all off.
 inline void set_variant(Controller& c, const std::string& variant) {

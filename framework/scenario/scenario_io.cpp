@@ -96,7 +96,8 @@ void read_controller(Reader& r, const YAML::Node& n, Controller& c) {
                   "early_dock",
                   "face",
                   "narrow",
-                  "track"});
+                  "track",
+                  "escape"});
   struct Field {
     const char* key;
     double* value;
