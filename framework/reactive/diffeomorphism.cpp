@@ -324,9 +324,85 @@ std::optional<Tree> choose_tree(const std::vector<Polygon>& P,
   return std::nullopt;
 }
 
+// The candidate trees of one component (§3.1–3.2), in order of preference (see build()).
+std::vector<Tree> candidate_trees(const FamiliarComponent& comp, double sliver_area) {
+  std::vector<Tree> out;
+  auto usable = [&](std::vector<Polygon> raw) {
+    std::vector<Polygon> kept;
+    for (Polygon& p : raw) {
+      if (p.area() > sliver_area) kept.push_back(std::move(p));
+    }
+    insert_junctions(kept, comp.polygon.vertices);
+    return kept;
+  };
+  auto add = [&](const std::vector<Polygon>& P) {
+    if (P.empty()) return;
+    if (auto t = choose_tree(P, comp.lid)) {
+      out.push_back(std::move(*t));
+    } else if (auto u = choose_tree(split_flat_corners(P, sliver_area), comp.lid)) {
+      out.push_back(std::move(*u));
+    }
+  };
+  try {
+    add(usable(geometry::decompose_by_extensions(comp.polygon)));
+  } catch (const Error&) {
+    // not simple enough for extension cuts: the other decompositions remain
+  }
+  add(usable(geometry::convex_partition(comp.polygon)));
+  try {
+    add(geometry::triangulate(comp.polygon));
+  } catch (const Error&) {
+  }
+  // Curved: fewest convex pieces first (stable: the preference order above breaks ties).
+  if (comp.curved) {
+    std::stable_sort(out.begin(), out.end(), [](const Tree& a, const Tree& b) {
+      return a.pieces.size() < b.pieces.size();
+    });
+  }
+  return out;
+}
+
 }  // namespace
 
+// Candidate trees by component (exact vertices, lid, curvature and sliver area).
+struct DecompositionCache::Impl {
+  struct Entry {
+    Polygon polygon;
+    std::optional<std::pair<Point, Point>> lid;
+    bool curved;
+    double sliver_area;
+    std::vector<Tree> trees;
+  };
+  std::vector<Entry> entries;
+
+  const std::vector<Tree>& trees(const FamiliarComponent& c, double sliver_area) {
+    for (const Entry& e : entries) {
+      if (e.curved == c.curved && e.sliver_area == sliver_area && e.lid == c.lid &&
+          e.polygon.vertices == c.polygon.vertices) {
+        return e.trees;
+      }
+    }
+    if (entries.size() >= kDecompositionCacheEntries) entries.clear();
+    entries.push_back(
+        Entry{c.polygon, c.lid, c.curved, sliver_area, candidate_trees(c, sliver_area)});
+    return entries.back().trees;
+  }
+};
+
+DecompositionCache::DecompositionCache() : impl_(std::make_unique<Impl>()) {}
+DecompositionCache::~DecompositionCache() = default;
+DecompositionCache::DecompositionCache(DecompositionCache&&) noexcept = default;
+DecompositionCache& DecompositionCache::operator=(DecompositionCache&&) noexcept = default;
+std::size_t DecompositionCache::size() const { return impl_ ? impl_->entries.size() : 0; }
+
 Diffeomorphism Diffeomorphism::build(const MappedSpace& m, const DiffeoParams& params) {
+  DecompositionCache fresh;
+  return build(m, params, fresh);
+}
+
+Diffeomorphism Diffeomorphism::build(const MappedSpace& m, const DiffeoParams& params,
+                                     DecompositionCache& cache) {
+  if (!cache.impl_) cache.impl_ = std::make_unique<DecompositionCache::Impl>();  // moved from
   validate(params);
   if (m.enclosing.size() < 3 || !m.enclosing.is_convex()) {
     throw Error(
@@ -351,42 +427,11 @@ Diffeomorphism Diffeomorphism::build(const MappedSpace& m, const DiffeoParams& p
   std::vector<std::vector<Polygon>> pieces(m.familiar.size());
   for (std::size_t ci = 0; ci < m.familiar.size(); ++ci) {
     const FamiliarComponent& comp = m.familiar[ci];
-    auto usable = [&](std::vector<Polygon> raw) {
-      std::vector<Polygon> kept;
-      for (Polygon& p : raw) {
-        if (p.area() > params.sliver_area) kept.push_back(std::move(p));
-      }
-      insert_junctions(kept, comp.polygon.vertices);
-      return kept;
-    };
-    auto add = [&](const std::vector<Polygon>& P) {
-      if (P.empty()) return;
-      if (auto t = choose_tree(P, comp.lid)) {
-        candidates[ci].push_back(std::move(*t));
-      } else if (auto u = choose_tree(split_flat_corners(P, params.sliver_area), comp.lid)) {
-        candidates[ci].push_back(std::move(*u));
-      }
-    };
-    try {
-      add(usable(geometry::decompose_by_extensions(comp.polygon)));
-    } catch (const Error&) {
-      // not simple enough for extension cuts: the other decompositions remain
-    }
-    add(usable(geometry::convex_partition(comp.polygon)));
-    try {
-      add(geometry::triangulate(comp.polygon));
-    } catch (const Error&) {
-    }
+    candidates[ci] = cache.impl_->trees(comp, params.sliver_area);
     if (candidates[ci].empty()) {
       if (comp.polygon.area() <= params.sliver_area) continue;  // a sliver: nothing to purge
       throw Error("diffeomorphism: familiar component " + std::to_string(ci) +
                   " admits no purging tree (its convex pieces are not edge-connected)");
-    }
-    // Curved: fewest convex pieces first (stable: the preference order above breaks ties).
-    if (comp.curved) {
-      std::stable_sort(
-          candidates[ci].begin(), candidates[ci].end(),
-          [](const Tree& a, const Tree& b) { return a.pieces.size() < b.pieces.size(); });
     }
     pieces[ci] = candidates[ci].front().pieces;  // what other components' collars avoid
   }

@@ -26,6 +26,7 @@
 
 #include <Eigen/Geometry>
 #include <array>
+#include <memory>
 #include <vector>
 
 #include "geometry/convex.h"
@@ -63,12 +64,38 @@ struct Purge {
   Eigen::AlignedBox2d collar_box;
 };
 
+// Components remembered by DecompositionCache before it is emptied.
+inline constexpr std::size_t kDecompositionCacheEntries = 256;
+
+// The convex decompositions and candidate trees of familiar components (§3.1–3.2), remembered
+// between rebuilds: they depend on the component's polygon, lid and curvature only, and a
+// rebuild often changes few components (a new fragment, a moved object), while the
+// decompositions (CGAL's optimal convex partition above all) were about a quarter of a rebuild
+// at N = 8 (docs/reactive.md §2). Keyed by the exact vertices; the result of build() is
+// identical. Not thread-safe (one per controller).
+class DecompositionCache {
+ public:
+  DecompositionCache();
+  ~DecompositionCache();
+  DecompositionCache(DecompositionCache&&) noexcept;
+  DecompositionCache& operator=(DecompositionCache&&) noexcept;
+  std::size_t size() const;
+
+ private:
+  friend class Diffeomorphism;
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
 class Diffeomorphism {
  public:
   // Builds the trees of every familiar component of m (docs/reactive.md §3.1–3.7). Throws
   // rearm::Error on invalid parameters or geometry that admits no construction (a collar
   // that cannot avoid another obstacle).
   static Diffeomorphism build(const MappedSpace& m, const DiffeoParams& params = {});
+  // The same, the components' candidate trees taken from (and added to) `cache`.
+  static Diffeomorphism build(const MappedSpace& m, const DiffeoParams& params,
+                              DecompositionCache& cache);
 
   // h, Dh, D²h at x. x must be a finite point of the freespace (not checked on this path;
   // inside an obstacle the value is defined but meaningless). No allocation.

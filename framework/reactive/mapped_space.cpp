@@ -99,17 +99,31 @@ void DilationCache::set_miter_limit(double limit) {
     throw Error("dilation cache: the miter limit must be finite and >= 1, got " +
                 std::to_string(limit));
   }
-  if (limit != miter_limit_) entries_.clear();
+  if (limit != miter_limit_) miters_.clear();
   miter_limit_ = limit;
 }
 
-const geometry::RegionSet& DilationCache::miter(const Polygon& p, double d) {
-  for (const Entry& e : entries_) {
-    if (e.distance == d && e.polygon.vertices == p.vertices) return e.dilation;
+template <class Make>
+const geometry::RegionSet& DilationCache::lookup(std::vector<Entry>& entries, const Polygon& p,
+                                                 double d, Make make) {
+  for (const Entry& e : entries) {
+    if (e.distance == d && e.polygon.vertices == p.vertices) return e.result;
   }
-  if (entries_.size() >= kDilationCacheEntries) entries_.clear();
-  entries_.push_back(Entry{p, d, geometry::dilate_miter(p, d, miter_limit_)});
-  return entries_.back().dilation;
+  if (entries.size() >= kDilationCacheEntries) entries.clear();
+  entries.push_back(Entry{p, d, make()});
+  return entries.back().result;
+}
+
+const geometry::RegionSet& DilationCache::miter(const Polygon& p, double d) {
+  return lookup(miters_, p, d, [&] { return geometry::dilate_miter(p, d, miter_limit_); });
+}
+
+const geometry::RegionSet& DilationCache::round(const Polygon& p, double d) {
+  return lookup(rounds_, p, d, [&] { return geometry::dilate_round(p, d); });
+}
+
+const geometry::RegionSet& DilationCache::eroded(const Polygon& workspace, double d) {
+  return lookup(erosions_, workspace, d, [&] { return geometry::erode(workspace, d); });
 }
 
 MappedSpace build_mapped_space(const SemanticInput& in, double radius, const Point& robot) {
@@ -158,7 +172,7 @@ Dilated dilate_obstacles(const SemanticInput& in, double radius, DilationCache& 
     const std::string what = "unknown obstacle " + std::to_string(i);
     const Polygon p = geometry::validated(in.unknown[i], what.c_str());
     if (!geometry::remove_collinear(p).is_convex()) throw Error(what + " is not convex");
-    const RegionSet d = geometry::dilate_round(p, radius + kContactSlack);
+    const RegionSet& d = cache.round(p, radius + kContactSlack);
     out.add(d);
     out.unknown_dilated.push_back(geometry::convex_hull(d.front().outer.vertices));
     out.sources.push_back({Kind::kUnknown, i, p.vertices.front()});
@@ -248,7 +262,7 @@ MappedSpace build_mapped_space(const SemanticInput& in, double radius, const Poi
   }
   check_point(robot, "mapped space: robot position");
   // The workspace eroded by the radius (conservative), minus the dilated obstacles (§2).
-  const RegionSet eroded = geometry::erode(in.workspace, radius);
+  const RegionSet& eroded = cache.eroded(in.workspace, radius);
   const Dilated d = dilate_obstacles(in, radius, cache);
   const RegionSet free = geometry::subtract(eroded, consolidate(d));
 

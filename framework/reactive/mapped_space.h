@@ -70,10 +70,12 @@ class NotInFreespace : public Error {
 // not in the freespace (start inside an obstacle or outside the workspace).
 MappedSpace build_mapped_space(const SemanticInput& input, double radius, const Point& robot);
 
-// Mitered dilations of familiar obstacles, remembered between rebuilds: a familiar obstacle
-// never changes once localized, and the radius only at a grasp or a release, while a dilation
-// is about 70 % of a mapped-space build. Keyed by the exact vertices and radius; a cache
-// that grows past kDilationCacheEntries is emptied. Not thread-safe (one per controller).
+// Dilations remembered between rebuilds, keyed by the exact vertices and radius: the mitered
+// dilations of familiar obstacles (a familiar obstacle never changes once localized, and the
+// radius only at a grasp or a release), the round dilations of unknown fragments (a fragment
+// changes only when the sensor sees more of it; the others stay as they were) and the eroded
+// workspace. Each kind that grows past kDilationCacheEntries is emptied. Not thread-safe (one
+// per controller).
 inline constexpr std::size_t kDilationCacheEntries = 256;
 
 class DilationCache {
@@ -82,8 +84,12 @@ class DilationCache {
   explicit DilationCache(double miter_limit = geometry::kMiterLimit);
   // The mitered dilation of p by d (geometry::dilate_miter), computed once per (p, d).
   const geometry::RegionSet& miter(const Polygon& p, double d);
-  std::size_t size() const { return entries_.size(); }
-  // A new limit empties the cache.
+  // The round dilation of p by d (geometry::dilate_round), computed once per (p, d).
+  const geometry::RegionSet& round(const Polygon& p, double d);
+  // The workspace eroded by d (geometry::erode), computed once per (workspace, d).
+  const geometry::RegionSet& eroded(const Polygon& workspace, double d);
+  std::size_t size() const { return miters_.size() + rounds_.size() + erosions_.size(); }
+  // A new limit empties the mitered dilations.
   void set_miter_limit(double limit);
   double miter_limit() const { return miter_limit_; }
 
@@ -92,12 +98,18 @@ class DilationCache {
   struct Entry {
     Polygon polygon;
     double distance;
-    geometry::RegionSet dilation;
+    geometry::RegionSet result;
   };
-  std::vector<Entry> entries_;
+  template <class Make>
+  static const geometry::RegionSet& lookup(std::vector<Entry>& entries, const Polygon& p, double d,
+                                           Make make);
+  std::vector<Entry> miters_;
+  std::vector<Entry> rounds_;
+  std::vector<Entry> erosions_;
 };
 
-// The same, with familiar dilations taken from (and added to) `cache`; the result is identical.
+// The same, with the dilations and the erosion taken from (and added to) `cache`; the result is
+// identical.
 MappedSpace build_mapped_space(const SemanticInput& input, double radius, const Point& robot,
                                DilationCache& cache);
 

@@ -82,16 +82,19 @@ RebuildResult ReactiveController::try_rebuild(const SemanticInput& map, double r
   std::unique_ptr<Diffeomorphism> diffeo;
   if (fallback_ && convexify_all_) convexify(mapped, [](const FamiliarComponent&) { return true; });
   try {
-    diffeo = std::make_unique<Diffeomorphism>(Diffeomorphism::build(mapped, diffeo_params_));
+    diffeo = std::make_unique<Diffeomorphism>(
+        Diffeomorphism::build(mapped, diffeo_params_, decompositions_));
   } catch (const Error&) {
     if (!fallback_) throw;
     ++fallbacks_;
     convexify(mapped, [](const FamiliarComponent& c) { return c.curved; });
     try {
-      diffeo = std::make_unique<Diffeomorphism>(Diffeomorphism::build(mapped, diffeo_params_));
+      diffeo = std::make_unique<Diffeomorphism>(
+          Diffeomorphism::build(mapped, diffeo_params_, decompositions_));
     } catch (const Error&) {
       convexify(mapped, [](const FamiliarComponent&) { return true; });
-      diffeo = std::make_unique<Diffeomorphism>(Diffeomorphism::build(mapped, diffeo_params_));
+      diffeo = std::make_unique<Diffeomorphism>(
+          Diffeomorphism::build(mapped, diffeo_params_, decompositions_));
     }
   }
   if (fallback_ && convexify_all_) ++fallbacks_;

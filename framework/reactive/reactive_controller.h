@@ -96,7 +96,8 @@ class ReactiveController {
   DiffeoParams diffeo_params_;
   NavParams nav_;
   MappedSpace mapped_;
-  DilationCache dilations_;  // familiar obstacles' dilations, kept across rebuilds
+  DilationCache dilations_;            // dilations and the erosion, kept across rebuilds
+  DecompositionCache decompositions_;  // components' candidate trees, kept across rebuilds
   std::unique_ptr<Diffeomorphism> diffeo_;
   Point goal_ = Point::Zero();
   Point model_goal_ = Point::Zero();

@@ -44,13 +44,16 @@ TEST(MappedSpace, DilationCacheGivesTheSameSpace) {
           expect_same(plain.familiar[k].polygon, cached.familiar[k].polygon);
           EXPECT_EQ(plain.familiar[k].lid.has_value(), cached.familiar[k].lid.has_value());
         }
+        ASSERT_EQ(plain.unknown.size(), cached.unknown.size());
+        for (std::size_t k = 0; k < plain.unknown.size(); ++k) {
+          expect_same(plain.unknown[k], cached.unknown[k]);
+        }
       }
     }
   }
   EXPECT_GT(cache.size(), 0u);
-  EXPECT_LE(cache.size(), kDilationCacheEntries);
+  EXPECT_LE(cache.size(), 3 * kDilationCacheEntries);  // miter, round, erosion
 }
-
 
 Polygon rect(double x0, double y0, double x1, double y1) {
   return Polygon{{Point(x0, y0), Point(x1, y0), Point(x1, y1), Point(x0, y1)}};
