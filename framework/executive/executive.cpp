@@ -895,8 +895,8 @@ Executive::Advance Executive::start_back_out(Activity& a, const Pose& pose, cons
   a.backing = true;
   a.backing_travel = 0;
   a.backing_dir = -1;
-  a.escape_chosen = false;
   a.escape.reset();
+  if (p_.robust.escape && !map_.carried()) a.escape = escape_line(pose.x);
   return back_out(a, pose, t, dt);
 }
 
@@ -919,17 +919,11 @@ Executive::Advance Executive::back_out(Activity& a, const Pose& pose, double t, 
     return out;
   };
   if (a.backing_travel >= p_.robust.back_out_step) return finish_backing();
-  if (!carried && p_.robust.escape) {
-    if (!a.escape_chosen) {
-      a.escape_chosen = true;
-      a.escape = escape_line(pose.x);
-    }
-    if (a.escape) {
-      const std::optional<Twist> u = escape_step(a, pose, dt);
-      if (!u) return finish_backing();
-      out.u = *u;
-      return out;
-    }
+  if (a.escape) {
+    const std::optional<Twist> u = escape_step(a, pose, dt);
+    if (!u) return finish_backing();
+    out.u = *u;
+    return out;
   }
   const double v = std::min(p_.backoff_speed, (p_.robust.back_out_step - a.backing_travel) / dt);
   const double w = carried ? std::min(p_.nav.omega_max, v / rho) : 0;

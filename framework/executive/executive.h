@@ -337,8 +337,7 @@ class Executive {
     bool backing = false;
     double backing_travel = 0;     // m moved (arc length of the centre) in this back-up
     int backing_dir = -1;          // index into the back-up moves, -1: choose one
-    bool escape_chosen = false;    // RobustParams::escape: line chosen for this back-up
-    std::optional<Escape> escape;  // the line driven along (none: back_out's moves)
+    std::optional<Escape> escape;  // RobustParams::escape: this back-up's line (none: moves)
     bool convex_all = false;
     int contact_outs = 0;         // back-ups off ∂F_k when the monitor fired (kContactClearance)
     bool narrowed = false;        // RobustParams::narrow was tried for this action

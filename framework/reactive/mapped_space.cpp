@@ -262,7 +262,7 @@ MappedSpace build_mapped_space(const SemanticInput& in, double radius, const Poi
   }
   check_point(robot, "mapped space: robot position");
   // The workspace eroded by the radius (conservative), minus the dilated obstacles (§2).
-  const RegionSet& eroded = cache.eroded(in.workspace, radius);
+  const RegionSet eroded = cache.eroded(in.workspace, radius);  // a copy: the cache grows below
   const Dilated d = dilate_obstacles(in, radius, cache);
   const RegionSet free = geometry::subtract(eroded, consolidate(d));
 
