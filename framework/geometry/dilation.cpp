@@ -15,9 +15,11 @@
 //    within sqrt(kMiterLimit² + 1)·r at bevelled ones (the bevel's ends).
 #include "geometry/dilation.h"
 
+#include <CGAL/Exact_rational.h>
 #include <CGAL/minkowski_sum_2.h>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -46,15 +48,95 @@ int disk_sides() {
   return n;
 }
 
-internal::CPolygon circumscribed_disk(double r) {
+std::vector<Point> disk_vertices(double r) {
   const int n = disk_sides();
   const double radius = r / std::cos(std::numbers::pi / n);
-  internal::CPolygon disk;
+  std::vector<Point> disk;
+  disk.reserve(static_cast<std::size_t>(n));
   for (int k = 0; k < n; ++k) {
     const double a = 2 * std::numbers::pi * k / n;
-    disk.push_back(internal::to_cgal(Point(radius * std::cos(a), radius * std::sin(a))));
+    disk.emplace_back(radius * std::cos(a), radius * std::sin(a));
   }
   return disk;
+}
+
+internal::CPolygon circumscribed_disk(double r) {
+  internal::CPolygon disk;
+  for (const Point& v : disk_vertices(r)) disk.push_back(internal::to_cgal(v));
+  return disk;
+}
+
+// Exact sign of the cross product of the edge vectors b - a and d - c (four double points):
+// a floating-point filter, exact rationals when the filter cannot decide.
+int cross_sign(const Point& a, const Point& b, const Point& c, const Point& d) {
+  const double ux = b.x() - a.x(), uy = b.y() - a.y();
+  const double vx = d.x() - c.x(), vy = d.y() - c.y();
+  const double l = ux * vy, m = uy * vx;
+  // Each difference and product is within a relative 2^-53 of its exact value; 8 units of the
+  // larger term bound the error of l - m with room to spare.
+  const double bound = 8 * std::numeric_limits<double>::epsilon() * (std::abs(l) + std::abs(m));
+  if (l - m > bound) return 1;
+  if (m - l > bound) return -1;
+  using Q = CGAL::Exact_rational;
+  const Q ex = Q(b.x()) - Q(a.x()), ey = Q(b.y()) - Q(a.y());
+  const Q fx = Q(d.x()) - Q(c.x()), fy = Q(d.y()) - Q(c.y());
+  return CGAL::sign(ex * fy - ey * fx);
+}
+
+// Every turn of the closed polygon strictly to the left (exact): no collinear vertex.
+bool strictly_convex(const Polygon& p) {
+  const std::size_t n = p.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Point& a = p.vertices[i];
+    const Point& b = p.vertices[(i + 1) % n];
+    const Point& c = p.vertices[(i + 2) % n];
+    if (cross_sign(a, b, b, c) <= 0) return false;
+  }
+  return true;
+}
+
+// a + b as CGAL's exact kernel rounds a sum to a double: the midpoint of the tightest
+// interval around the exact value (CGAL::to_double of a lazy number), which is not always the
+// nearest double. Keeps the fast Minkowski sum below bit-identical to the exact one.
+double lazy_rounded_sum(double a, double b) {
+  const double s = a + b;
+  const double t = s - a;
+  const double e = (a - (s - t)) + (b - t);  // a + b = s + e exactly (two-sum)
+  if (e == 0) return s;
+  const double other = std::nextafter(s, e > 0 ? std::numeric_limits<double>::infinity()
+                                               : -std::numeric_limits<double>::infinity());
+  return (s + other) * 0.5;
+}
+
+// Index of the lowest vertex (smallest y, then smallest x).
+std::size_t lowest(const std::vector<Point>& v) {
+  std::size_t best = 0;
+  for (std::size_t i = 1; i < v.size(); ++i) {
+    if (v[i].y() < v[best].y() || (v[i].y() == v[best].y() && v[i].x() < v[best].x())) best = i;
+  }
+  return best;
+}
+
+// Minkowski sum of two strictly convex counter-clockwise polygons: their edges merged by
+// direction from the lowest vertices (parallel edges joined), decided exactly; each vertex
+// p_i + q_j rounded as the exact kernel rounds it. The same polygon as CGAL's exact sum.
+Polygon convex_sum(const Polygon& p, const std::vector<Point>& q) {
+  const std::vector<Point>& a = p.vertices;
+  const std::size_t n = a.size(), m = q.size();
+  std::size_t i = lowest(a), j = lowest(q), di = 0, dj = 0;
+  Polygon out;
+  out.vertices.reserve(n + m);
+  while (di < n || dj < m) {
+    const Point& pa = a[i % n];
+    const Point& pq = q[j % m];
+    out.vertices.emplace_back(lazy_rounded_sum(pa.x(), pq.x()), lazy_rounded_sum(pa.y(), pq.y()));
+    const int turn = di == n   ? -1
+                     : dj == m ? 1
+                               : cross_sign(pa, a[(i + 1) % n], pq, q[(j + 1) % m]);
+    if (turn >= 0) ++i, ++di;
+    if (turn <= 0) ++j, ++dj;
+  }
+  return out;
 }
 
 }  // namespace
@@ -62,6 +144,13 @@ internal::CPolygon circumscribed_disk(double r) {
 RegionSet dilate_round(const Polygon& p, double r) {
   check_radius(r, "dilate_round");
   const Polygon ccw = validated(p, "dilate_round polygon");
+  if (strictly_convex(ccw)) return RegionSet{Region{convex_sum(ccw, disk_vertices(r)), {}}};
+  return dilate_round_exact(ccw, r);
+}
+
+RegionSet dilate_round_exact(const Polygon& p, double r) {
+  check_radius(r, "dilate_round_exact");
+  const Polygon ccw = validated(p, "dilate_round_exact polygon");
   const internal::CPolygonWithHoles sum =
       CGAL::minkowski_sum_2(internal::to_cgal(ccw), circumscribed_disk(r));
   return RegionSet{internal::from_cgal(sum)};

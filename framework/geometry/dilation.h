@@ -27,7 +27,12 @@ inline constexpr double kMaxDilationError = 5e-3;
 inline constexpr double kMiterLimit = 2.0;
 
 // p is validated (polygon.h); r must be finite and > 0. Both throw rearm::Error otherwise.
+// A strictly convex p (the unknown fragments) takes a linear-time merge of the two polygons'
+// edges, decided exactly and rounded as the exact kernel rounds: the same polygon, vertex for
+// vertex, as dilate_round_exact, which every other polygon takes.
 RegionSet dilate_round(const Polygon& p, double r);
+// The Minkowski sum of any simple polygon with the n-gon, built by CGAL's exact kernel.
+RegionSet dilate_round_exact(const Polygon& p, double r);
 // `limit`: the miter limit in units of r (finite, >= 1; kMiterLimit unless a caller asks for
 // tighter corners: 1 bevels every convex corner on the disk dilation's tangent).
 RegionSet dilate_miter(const Polygon& p, double r, double limit = kMiterLimit);

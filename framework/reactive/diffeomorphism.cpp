@@ -8,6 +8,8 @@
 #include <cmath>
 #include <deque>
 #include <limits>
+#include <memory>
+#include <optional>
 #include <string>
 
 #include "core/error.h"
@@ -324,9 +326,46 @@ std::optional<Tree> choose_tree(const std::vector<Polygon>& P,
   return std::nullopt;
 }
 
-// The candidate trees of one component (§3.1–3.2), in order of preference (see build()).
-std::vector<Tree> candidate_trees(const FamiliarComponent& comp, double sliver_area) {
-  std::vector<Tree> out;
+// A component's candidate trees (§3.1–3.2) in order of preference (see build()). The
+// triangulation's tree, the last resort, is built only when every candidate before it has
+// failed: ear clipping is cubic in the vertices, and curved components have hundreds.
+struct Candidates {
+  FamiliarComponent comp;
+  double sliver_area;
+  std::vector<Tree> trees;
+  std::size_t triangulation_at = 0;  // where the triangulation's tree goes in `trees`
+  bool triangulation_pending = true;
+
+  // The k-th candidate, or nullptr past the last.
+  const Tree* at(std::size_t k);
+};
+
+// The tree over P (or over P with its flat corners split), if one exists.
+std::optional<Tree> tree_over(const std::vector<Polygon>& P, const FamiliarComponent& comp,
+                              double sliver_area) {
+  if (P.empty()) return std::nullopt;
+  if (auto t = choose_tree(P, comp.lid)) return t;
+  return choose_tree(split_flat_corners(P, sliver_area), comp.lid);
+}
+
+const Tree* Candidates::at(std::size_t k) {
+  if (triangulation_pending && k == triangulation_at) {
+    triangulation_pending = false;
+    try {
+      if (auto t = tree_over(geometry::triangulate(comp.polygon), comp, sliver_area)) {
+        trees.insert(trees.begin() + static_cast<std::ptrdiff_t>(k), std::move(*t));
+      }
+    } catch (const Error&) {
+    }
+  }
+  return k < trees.size() ? &trees[k] : nullptr;
+}
+
+// The candidates of one component: extension cuts, then CGAL's partition, then (lazily) the
+// triangulation; a curved component's fewest pieces first. The triangulation has n − 2
+// triangles (no flat corners to split), which fixes its place without computing it.
+Candidates candidate_trees(const FamiliarComponent& comp, double sliver_area) {
+  Candidates out{comp, sliver_area, {}};
   auto usable = [&](std::vector<Polygon> raw) {
     std::vector<Polygon> kept;
     for (Polygon& p : raw) {
@@ -336,12 +375,7 @@ std::vector<Tree> candidate_trees(const FamiliarComponent& comp, double sliver_a
     return kept;
   };
   auto add = [&](const std::vector<Polygon>& P) {
-    if (P.empty()) return;
-    if (auto t = choose_tree(P, comp.lid)) {
-      out.push_back(std::move(*t));
-    } else if (auto u = choose_tree(split_flat_corners(P, sliver_area), comp.lid)) {
-      out.push_back(std::move(*u));
-    }
+    if (auto t = tree_over(P, comp, sliver_area)) out.trees.push_back(std::move(*t));
   };
   try {
     add(usable(geometry::decompose_by_extensions(comp.polygon)));
@@ -349,43 +383,37 @@ std::vector<Tree> candidate_trees(const FamiliarComponent& comp, double sliver_a
     // not simple enough for extension cuts: the other decompositions remain
   }
   add(usable(geometry::convex_partition(comp.polygon)));
-  try {
-    add(geometry::triangulate(comp.polygon));
-  } catch (const Error&) {
-  }
+  out.triangulation_at = out.trees.size();
   // Curved: fewest convex pieces first (stable: the preference order above breaks ties).
   if (comp.curved) {
-    std::stable_sort(out.begin(), out.end(), [](const Tree& a, const Tree& b) {
+    std::stable_sort(out.trees.begin(), out.trees.end(), [](const Tree& a, const Tree& b) {
       return a.pieces.size() < b.pieces.size();
     });
+    const std::size_t triangles = comp.polygon.size() - 2;
+    out.triangulation_at = static_cast<std::size_t>(
+        std::count_if(out.trees.begin(), out.trees.end(),
+                      [&](const Tree& t) { return t.pieces.size() <= triangles; }));
   }
   return out;
 }
 
 }  // namespace
 
-// Candidate trees by component (exact vertices, lid, curvature and sliver area).
+// Candidate trees by component (exact vertices, lid, curvature and sliver area). Entries are
+// shared so that a build keeps its components' candidates when the cache is emptied midway.
 struct DecompositionCache::Impl {
-  struct Entry {
-    Polygon polygon;
-    std::optional<std::pair<Point, Point>> lid;
-    bool curved;
-    double sliver_area;
-    std::vector<Tree> trees;
-  };
-  std::vector<Entry> entries;
+  std::vector<std::shared_ptr<Candidates>> entries;
 
-  const std::vector<Tree>& trees(const FamiliarComponent& c, double sliver_area) {
-    for (const Entry& e : entries) {
-      if (e.curved == c.curved && e.sliver_area == sliver_area && e.lid == c.lid &&
-          e.polygon.vertices == c.polygon.vertices) {
-        return e.trees;
+  std::shared_ptr<Candidates> trees(const FamiliarComponent& c, double sliver_area) {
+    for (const std::shared_ptr<Candidates>& e : entries) {
+      if (e->comp.curved == c.curved && e->sliver_area == sliver_area && e->comp.lid == c.lid &&
+          e->comp.polygon.vertices == c.polygon.vertices) {
+        return e;
       }
     }
     if (entries.size() >= kDecompositionCacheEntries) entries.clear();
-    entries.push_back(
-        Entry{c.polygon, c.lid, c.curved, sliver_area, candidate_trees(c, sliver_area)});
-    return entries.back().trees;
+    entries.push_back(std::make_shared<Candidates>(candidate_trees(c, sliver_area)));
+    return entries.back();
   }
 };
 
@@ -423,17 +451,18 @@ Diffeomorphism Diffeomorphism::build(const MappedSpace& m, const DiffeoParams& p
   // slivers, and purging a large piece into a sliver's centre drives det Dh towards 0 (the
   // robot then turns in place, or Dh is singular). The first candidate whose collars can all
   // be built (§3.4) is used.
-  std::vector<std::vector<Tree>> candidates(m.familiar.size());
+  std::vector<std::shared_ptr<Candidates>> candidates(m.familiar.size());
   std::vector<std::vector<Polygon>> pieces(m.familiar.size());
   for (std::size_t ci = 0; ci < m.familiar.size(); ++ci) {
     const FamiliarComponent& comp = m.familiar[ci];
     candidates[ci] = cache.impl_->trees(comp, params.sliver_area);
-    if (candidates[ci].empty()) {
+    const Tree* first = candidates[ci]->at(0);
+    if (first == nullptr) {
       if (comp.polygon.area() <= params.sliver_area) continue;  // a sliver: nothing to purge
       throw Error("diffeomorphism: familiar component " + std::to_string(ci) +
                   " admits no purging tree (its convex pieces are not edge-connected)");
     }
-    pieces[ci] = candidates[ci].front().pieces;  // what other components' collars avoid
+    pieces[ci] = first->pieces;  // what other components' collars avoid
   }
 
   // Convex obstacles a collar must avoid: pieces of the other components (tagged by their
@@ -604,11 +633,12 @@ Diffeomorphism Diffeomorphism::build(const MappedSpace& m, const DiffeoParams& p
   for (std::size_t ci = 0; ci < candidates.size(); ++ci) {
     std::string failure;
     bool built = false;
-    for (const Tree& tree : candidates[ci]) {
+    const Tree* tree = nullptr;
+    for (std::size_t k = 0; (tree = candidates[ci]->at(k)) != nullptr; ++k) {
       std::vector<Purge> purges;
       std::vector<Disk> disks;
       try {
-        build_component(ci, tree, purges, disks);
+        build_component(ci, *tree, purges, disks);
       } catch (const Error& e) {
         failure = e.what();
         continue;
@@ -619,7 +649,7 @@ Diffeomorphism Diffeomorphism::build(const MappedSpace& m, const DiffeoParams& p
       built = true;
       break;
     }
-    if (!built && !candidates[ci].empty()) throw Error(failure);
+    if (!built && candidates[ci]->at(0) != nullptr) throw Error(failure);
   }
   d.model_.disks = root_disks;
   d.model_.disks.insert(d.model_.disks.end(), m.movable.begin(), m.movable.end());

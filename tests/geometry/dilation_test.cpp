@@ -186,6 +186,42 @@ TEST(DilationTest, RoundOnRandomPolygons) {
   }
 }
 
+// The convex fast path (an exact edge merge) gives CGAL's exact Minkowski sum vertex for
+// vertex, up to where the cycle starts: on ellipse polygons, thin slivers a millimetre wide,
+// rectangles (edges parallel to none or some of the n-gon's) and far-off coordinates.
+TEST(DilationTest, ConvexRoundEqualsTheExactSum) {
+  Rng rng(20261202);
+  auto same_cycle = [](const Polygon& a, const Polygon& b) {
+    if (a.size() != b.size()) return false;
+    for (std::size_t s = 0; s < a.size(); ++s) {
+      bool all = true;
+      for (std::size_t i = 0; i < a.size() && all; ++i) {
+        all = a.vertices[i] == b.vertices[(i + s) % b.size()];
+      }
+      if (all) return true;
+    }
+    return false;
+  };
+  for (int trial = 0; trial < 400; ++trial) {
+    Polygon p = random_convex(rng, static_cast<int>(rng.uniform_int(3, 14)));
+    const Point shift(rng.uniform(-1e3, 1e3), rng.uniform(-1e3, 1e3));
+    const double squash = trial % 4 == 1 ? 1e-3 : 1;
+    for (Point& v : p.vertices) v = Point(v.x() * squash, v.y()) + shift;
+    if (trial % 4 == 2) {
+      const double w = rng.uniform(0.1, 3), h = rng.uniform(0.1, 3);
+      p = make({shift, shift + Point(w, 0), shift + Point(w, h), shift + Point(0, h)});
+    }
+    const double r = rng.uniform(0.01, 2);
+    SCOPED_TRACE(testing::Message() << "trial " << trial << " r " << r);
+    const RegionSet fast = dilate_round(p, r);
+    const RegionSet exact = dilate_round_exact(p, r);
+    ASSERT_EQ(fast.size(), 1u);
+    ASSERT_EQ(exact.size(), 1u);
+    EXPECT_TRUE(fast.front().holes.empty());
+    EXPECT_TRUE(same_cycle(fast.front().outer, exact.front().outer));
+  }
+}
+
 TEST(DilationTest, MiterOnRandomPolygons) {
   Rng rng(20261124);
   for (int trial = 0; trial < 12; ++trial) {
