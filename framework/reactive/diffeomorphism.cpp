@@ -173,6 +173,18 @@ bool corners_convex(const Polygon& piece, int e) {
 constexpr double kJunctionTolerance = 1e-9;
 
 void insert_junctions(std::vector<Polygon>& pieces, const std::vector<Point>& points) {
+  // The points by x, so that each edge tests only those in its x-range: a point within the
+  // collinearity tolerance of an edge (a, b) strictly between its ends lies within
+  // kJunctionTolerance·|b − a| of the segment, hence of its x-range (twice that, and a
+  // rounding margin, are searched). Candidates are taken in the points' own order.
+  std::vector<std::size_t> by_x(points.size());
+  for (std::size_t i = 0; i < by_x.size(); ++i) by_x[i] = i;
+  std::sort(by_x.begin(), by_x.end(),
+            [&](std::size_t l, std::size_t r) { return points[l].x() < points[r].x(); });
+  std::vector<double> xs(by_x.size());
+  for (std::size_t i = 0; i < by_x.size(); ++i) xs[i] = points[by_x[i]].x();
+  std::vector<std::size_t> near;
+  std::vector<std::pair<double, Point>> on_edge;
   for (Polygon& piece : pieces) {
     std::vector<Point> out;
     const std::size_t n = piece.size();
@@ -182,8 +194,15 @@ void insert_junctions(std::vector<Polygon>& pieces, const std::vector<Point>& po
       out.push_back(a);
       const Vector2d d = b - a;
       const double len2 = d.squaredNorm();
-      std::vector<std::pair<double, Point>> on_edge;
-      for (const Point& v : points) {
+      const double margin = 2 * kJunctionTolerance * std::sqrt(len2) +
+                            1e-12 * (std::abs(a.x()) + std::abs(b.x()) + 1);
+      const auto lo = std::lower_bound(xs.begin(), xs.end(), std::min(a.x(), b.x()) - margin);
+      const auto hi = std::upper_bound(lo, xs.end(), std::max(a.x(), b.x()) + margin);
+      near.assign(by_x.begin() + (lo - xs.begin()), by_x.begin() + (hi - xs.begin()));
+      std::sort(near.begin(), near.end());
+      on_edge.clear();
+      for (std::size_t k : near) {
+        const Point& v = points[k];
         if (v == a || v == b) continue;
         const Vector2d w = v - a;
         const double t = w.dot(d) / len2;

@@ -1,6 +1,7 @@
 // Semantic → mapped space (docs/reactive.md §2, paper Appendix III's freespace components).
 #include "reactive/mapped_space.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -201,11 +202,16 @@ RegionSet consolidate(const Dilated& d) {
 }
 
 // Holes of F_k: one per obstacle cluster. A lone unknown fragment stays a convex obstacle and a
-// lone movable object a disk; every other cluster is a familiar component.
+// lone movable object a disk; every other cluster is a familiar component. The lone fragments
+// are listed in m.unknown by their index in the input, and `lone` records, per fragment, its
+// hole and its place in m.unknown (MappedSpaceBuilder updates them in place).
 void add_clusters(MappedSpace& m, const Dilated& d, const SemanticInput& in, double radius,
-                  double sliver) {
+                  double sliver, LoneFragments& lone) {
   using Kind = Dilated::Kind;
-  for (const Polygon& hole : m.freespace.holes) {
+  lone.hole.assign(in.unknown.size(), -1);
+  lone.slot.assign(in.unknown.size(), -1);
+  for (std::size_t h = 0; h < m.freespace.holes.size(); ++h) {
+    const Polygon& hole = m.freespace.holes[h];
     if (hole.area() <= sliver) continue;
     int n_familiar = 0, n_unknown = 0, n_movable = 0;
     const Dilated::Source* last = nullptr;
@@ -216,7 +222,7 @@ void add_clusters(MappedSpace& m, const Dilated& d, const SemanticInput& in, dou
     }
     if (n_familiar == 0 && n_unknown + n_movable == 1) {
       if (last->kind == Kind::kUnknown) {
-        m.unknown.push_back(d.unknown_dilated[last->index]);
+        lone.hole[last->index] = static_cast<int>(h);
       } else {
         // The model disk circumscribes the hole (the circumscribed polygon of radius
         // ρ + r + kContactSlack): the navigation law then keeps the robot outside the very
@@ -229,6 +235,11 @@ void add_clusters(MappedSpace& m, const Dilated& d, const SemanticInput& in, dou
     }
     m.familiar.push_back(
         FamiliarComponent{drop_flat_vertices(hole), std::nullopt, n_unknown + n_movable > 0});
+  }
+  for (std::size_t j = 0; j < in.unknown.size(); ++j) {
+    if (lone.hole[j] < 0) continue;
+    lone.slot[j] = static_cast<int>(m.unknown.size());
+    m.unknown.push_back(d.unknown_dilated[j]);
   }
 }
 
@@ -252,10 +263,8 @@ void add_pockets(MappedSpace& m, const Dilated& d, double scale, double sliver) 
   }
 }
 
-}  // namespace
-
-MappedSpace build_mapped_space(const SemanticInput& in, double radius, const Point& robot,
-                               DilationCache& cache) {
+MappedSpace build_full(const SemanticInput& in, double radius, const Point& robot,
+                       DilationCache& cache, LoneFragments& lone) {
   if (!std::isfinite(radius) || !(radius > 0)) {
     throw Error("mapped space: dilation radius must be finite and > 0, got " +
                 std::to_string(radius));
@@ -286,8 +295,164 @@ MappedSpace build_mapped_space(const SemanticInput& in, double radius, const Poi
   m.enclosing = geometry::convex_hull(m.freespace.outer.vertices);
   const double scale = std::sqrt(m.enclosing.area());
   const double sliver = kRelativeSliverArea * scale * scale;
-  add_clusters(m, d, in, radius, sliver);
+  add_clusters(m, d, in, radius, sliver, lone);
   add_pockets(m, d, scale, sliver);
+  return m;
+}
+
+}  // namespace
+
+MappedSpace build_mapped_space(const SemanticInput& in, double radius, const Point& robot,
+                               DilationCache& cache) {
+  LoneFragments lone;
+  return build_full(in, radius, robot, cache, lone);
+}
+
+namespace {
+
+bool same_polygons(const std::vector<Polygon>& a, const std::vector<Polygon>& b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    if (a[i].vertices != b[i].vertices) return false;
+  }
+  return true;
+}
+
+bool same_disks(const std::vector<Disk>& a, const std::vector<Disk>& b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    if (a[i].center != b[i].center || a[i].radius != b[i].radius) return false;
+  }
+  return true;
+}
+
+Eigen::AlignedBox2d box_of(const Polygon& p) {
+  Eigen::AlignedBox2d b;
+  for (const Point& v : p.vertices) b.extend(v);
+  return b;
+}
+
+// A bound (relative to the dilation distance, with room for rounding) on how far the round
+// dilations and disk polygons reach: 1 / cos(π / n) for n >= 32 sides is below 1.005.
+constexpr double kRoundReach = 1.01;
+
+// Does the closed polygon d meet the closed set s (exact)?
+bool meets(const Polygon& d, const RegionSet& s) {
+  return geometry::intersects(geometry::to_set(d), s);
+}
+
+// Does d (with bounding box `box`) lie in the interior of the eroded workspace? No edge of its
+// boundary rings may come near d's box (conservative), and one vertex of d must be inside.
+bool strictly_inside(const Polygon& d, const Eigen::AlignedBox2d& box, const RegionSet& eroded) {
+  auto near = [&](const Polygon& ring) {
+    for (std::size_t i = 0, n = ring.size(); i < n; ++i) {
+      Eigen::AlignedBox2d e(ring.vertices[i]);
+      e.extend(ring.vertices[(i + 1) % n]);
+      if (e.intersects(box)) return true;
+    }
+    return false;
+  };
+  for (const Region& r : eroded) {
+    if (near(r.outer)) return false;
+    for (const Polygon& h : r.holes) {
+      if (near(h)) return false;
+    }
+  }
+  return geometry::contains(eroded, d.vertices.front());
+}
+
+}  // namespace
+
+MappedSpaceBuilder::MappedSpaceBuilder(double miter_limit) : cache_(miter_limit) {}
+
+MappedSpace MappedSpaceBuilder::build(const SemanticInput& in, double radius, const Point& robot) {
+  if (std::optional<MappedSpace> m = update(in, radius, robot)) {
+    ++incremental_;
+    last_->input.unknown = in.unknown;
+    last_->result = *m;
+    return std::move(*m);
+  }
+  last_.reset();
+  LoneFragments lone;
+  MappedSpace m = build_full(in, radius, robot, cache_, lone);
+  last_ = Last{in, radius, cache_.miter_limit(), m, std::move(lone)};
+  return m;
+}
+
+// The previous mapped space updated in place, or nullopt when the whole construction must run.
+std::optional<MappedSpace> MappedSpaceBuilder::update(const SemanticInput& in, double radius,
+                                                      const Point& robot) {
+  if (!last_ || last_->radius != radius || last_->miter_limit != cache_.miter_limit() ||
+      !robot.allFinite() || in.unknown.size() != last_->input.unknown.size() ||
+      last_->input.workspace.vertices != in.workspace.vertices ||
+      !same_polygons(last_->input.familiar, in.familiar) ||
+      !same_disks(last_->input.movable, in.movable)) {
+    return std::nullopt;
+  }
+  std::vector<std::size_t> changed;
+  for (std::size_t j = 0; j < in.unknown.size(); ++j) {
+    if (in.unknown[j].vertices == last_->input.unknown[j].vertices) continue;
+    if (last_->lone.hole[j] < 0) return std::nullopt;  // it was part of a cluster
+    changed.push_back(j);
+  }
+  const double d = radius + kContactSlack;
+  std::vector<Polygon> grown(in.unknown.size());
+  std::vector<Eigen::AlignedBox2d> boxes(in.unknown.size());
+  for (std::size_t j : changed) {
+    const std::string what = "unknown obstacle " + std::to_string(j);
+    const Polygon p = geometry::validated(in.unknown[j], what.c_str());
+    if (!geometry::remove_collinear(p).is_convex()) return std::nullopt;  // the full path throws
+    const RegionSet& g = cache_.round(p, d);
+    if (g.size() != 1 || !g.front().holes.empty()) return std::nullopt;
+    grown[j] = g.front().outer;
+    boxes[j] = box_of(grown[j]);
+  }
+  // Each changed fragment's dilation touches nothing else and stays inside the eroded workspace.
+  // An obstacle is tested exactly only when its box, grown by a bound on its dilation's reach
+  // (kRoundReach·d round, hypot(L, 1)·d mitered with miter limit L: dilation.h), meets the
+  // fragment's box.
+  const RegionSet& eroded = cache_.eroded(in.workspace, radius);
+  const double miter_reach = kRoundReach * std::hypot(cache_.miter_limit(), 1.0) * d;
+  auto reaches = [&](const Eigen::AlignedBox2d& b, const Polygon& p, double reach) {
+    Eigen::AlignedBox2d grown_box = box_of(p);
+    grown_box.min().array() -= reach;
+    grown_box.max().array() += reach;
+    return grown_box.intersects(b);
+  };
+  for (std::size_t j : changed) {
+    const Eigen::AlignedBox2d& b = boxes[j];
+    if (!strictly_inside(grown[j], b, eroded)) return std::nullopt;
+    for (const Polygon& f : in.familiar) {
+      if (reaches(b, f, miter_reach) && meets(grown[j], cache_.miter(geometry::validated(f), d))) {
+        return std::nullopt;
+      }
+    }
+    for (std::size_t k = 0; k < in.unknown.size(); ++k) {
+      if (k == j || !reaches(b, in.unknown[k], kRoundReach * d)) continue;
+      const RegionSet other = grown[k].size() > 0
+                                  ? geometry::to_set(grown[k])
+                                  : cache_.round(geometry::validated(in.unknown[k]), d);
+      if (meets(grown[j], other)) return std::nullopt;
+    }
+    for (const Disk& o : in.movable) {
+      const Disk g{o.center, o.radius + d};
+      if (!reaches(b, Polygon{{o.center}}, kRoundReach * g.radius)) continue;
+      if (meets(grown[j], geometry::to_set(geometry::disk_polygon(g)))) return std::nullopt;
+    }
+  }
+  MappedSpace m = last_->result;
+  for (std::size_t j : changed) {
+    const auto h = static_cast<std::size_t>(last_->lone.hole[j]);
+    // The new dilation lies in F_k together with the old hole (it meets no other boundary).
+    const Point& v = grown[j].vertices.front();
+    if (!geometry::contains(m.freespace, v) && !geometry::contains(m.freespace.holes[h], v)) {
+      return std::nullopt;
+    }
+    m.freespace.holes[h] = grown[j];
+    m.unknown[static_cast<std::size_t>(last_->lone.slot[j])] =
+        geometry::convex_hull(grown[j].vertices);
+  }
+  if (!geometry::contains(m.freespace, robot)) return std::nullopt;
   return m;
 }
 

@@ -113,6 +113,45 @@ class DilationCache {
 MappedSpace build_mapped_space(const SemanticInput& input, double radius, const Point& robot,
                                DilationCache& cache);
 
+// Where each unknown fragment of the input went in a mapped space: the index of its hole in
+// freespace.holes and of its convex obstacle in `unknown` when it is a lone hole of F_k, -1
+// otherwise (merged into a cluster or a pocket, or outside F_k).
+struct LoneFragments {
+  std::vector<int> hole;
+  std::vector<int> slot;
+};
+
+// Builds the mapped spaces of a sequence of semantic inputs (one controller's rebuilds). A
+// moving robot sees its unknown fragments change at almost every step, and in the random
+// scenes nearly every rebuild is that alone. When every changed fragment was a lone hole of F_k
+// and its new dilation still is (it touches no other dilated obstacle and no boundary of the
+// eroded workspace, exact tests; the robot stays in F_k), the previous mapped space is updated
+// in place: the fragment's hole and its convex obstacle replaced, everything else as it was.
+// Otherwise (and for anything else that changed) the whole construction runs. Both give the
+// same mapped space up to the order of freespace.holes and the first vertex of each hole.
+class MappedSpaceBuilder {
+ public:
+  explicit MappedSpaceBuilder(double miter_limit = geometry::kMiterLimit);
+  // build_mapped_space(input, radius, robot, dilations()), incrementally where it can.
+  MappedSpace build(const SemanticInput& input, double radius, const Point& robot);
+  DilationCache& dilations() { return cache_; }
+  // Builds that updated the previous mapped space in place.
+  int incremental() const { return incremental_; }
+
+ private:
+  struct Last {
+    SemanticInput input;
+    double radius = 0;
+    double miter_limit = 0;
+    MappedSpace result;
+    LoneFragments lone;
+  };
+  std::optional<MappedSpace> update(const SemanticInput& input, double radius, const Point& robot);
+  DilationCache cache_;
+  std::optional<Last> last_;
+  int incremental_ = 0;
+};
+
 // Is x in the closed freespace F_k of the mapped space (exact)?
 bool in_freespace(const MappedSpace& m, const Point& x);
 

@@ -64,7 +64,7 @@ RebuildResult ReactiveController::try_rebuild(const SemanticInput& map, double r
   if (!goal.allFinite()) throw Error("reactive controller: goal is not finite");
   MappedSpace mapped;
   try {
-    mapped = build_mapped_space(map, radius, center, dilations_);
+    mapped = mapped_builder_.build(map, radius, center);
   } catch (const NotInFreespace& e) {
     return {RebuildStatus::kCenterNotFree, e.what()};
   }

@@ -67,7 +67,7 @@ class ReactiveController {
   void set_convexify_all(bool on) { convexify_all_ = on; }
   // The miter limit of the familiar obstacles' dilations (geometry::dilate_miter) from the next
   // rebuild on.
-  void set_miter_limit(double limit) { dilations_.set_miter_limit(limit); }
+  void set_miter_limit(double limit) { mapped_builder_.dilations().set_miter_limit(limit); }
   // Rebuilds that used the convex fallback.
   int fallbacks() const { return fallbacks_; }
 
@@ -96,7 +96,7 @@ class ReactiveController {
   DiffeoParams diffeo_params_;
   NavParams nav_;
   MappedSpace mapped_;
-  DilationCache dilations_;            // dilations and the erosion, kept across rebuilds
+  MappedSpaceBuilder mapped_builder_;  // dilations, erosion and the last mapped space
   DecompositionCache decompositions_;  // components' candidate trees, kept across rebuilds
   std::unique_ptr<Diffeomorphism> diffeo_;
   Point goal_ = Point::Zero();
