@@ -40,6 +40,7 @@ executive::TaskSpec task_spec(const scenario::Scenario& s) {
   t.formula = s.task;
   t.sensor.range = s.robot.sensor_range;
   t.map_tolerances.fragment = s.controller.fragment_tolerance;
+  t.map_tolerances.scan_spacing = s.controller.scan_spacing;
   executive::ExecutiveParams& e = t.executive;
   e.robot_radius = s.robot.radius;
   e.diffeo.p = s.controller.p;

@@ -83,6 +83,12 @@ SemanticMap::SemanticMap(const World& world, const Sensor& sensor, const ChangeT
     : world_(validated(world)), sensor_(sensor), tol_(tol) {
   check_tolerance(tol.fragment, "fragment");
   check_tolerance(tol.object_move, "object move");
+  check_tolerance(tol.scan_spacing, "scan spacing");
+  if (tol.scan_spacing > sensor_.range() / kMaxScanSpacingFraction) {
+    throw Error("semantic map: the scan spacing (" + std::to_string(tol.scan_spacing) +
+                " m) must be at most a quarter of the sensing range (" +
+                std::to_string(sensor_.range()) + " m)");
+  }
   const std::size_t nf = world_.familiar.size();
   familiar_boxes_.reserve(nf);
   pending_.reserve(nf);
@@ -143,7 +149,13 @@ bool SemanticMap::update(const Point& robot) {
   }
   pending_.resize(kept);
 
-  // Unknown obstacles: the fragment inside the footprint, recomputed at every update.
+  // Unknown obstacles: the fragment inside the footprint, read again once the robot is
+  // scan_spacing from the last reading (at every update with 0).
+  if (scanned_ && (robot - *scanned_).norm() < tol_.scan_spacing) {
+    if (changed) bump();
+    return changed;
+  }
+  scanned_ = robot;
   bool fragments_changed = false;
   for (std::size_t j = 0; j < world_.unknown.size(); ++j) {
     std::vector<Point>& c = candidate_[j];

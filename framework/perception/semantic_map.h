@@ -29,9 +29,17 @@ inline constexpr double kFragmentTolerance = 1e-3;
 // where the map last reported it; slower motion accumulates until it crosses the tolerance.
 inline constexpr double kObjectMoveTolerance = 1e-3;
 
+// The unknown fragments are read again once the robot has travelled this far (m) from where
+// they were last read; 0 reads them at every update (the paper's sensor, §II). Between readings
+// the fragments are those seen from a point within s of the robot, whose footprint contains
+// the disk of radius R − s around it: everything within R − s of the robot is known as at
+// every update. At most the sensing range R over kMaxScanSpacingFraction.
+inline constexpr double kMaxScanSpacingFraction = 4;
+
 struct ChangeTolerances {
   double fragment = kFragmentTolerance;
   double object_move = kObjectMoveTolerance;
+  double scan_spacing = 0;
 };
 
 class SemanticMap {
@@ -42,9 +50,9 @@ class SemanticMap {
   SemanticMap(const World& world, const Sensor& sensor, const ChangeTolerances& tol = {});
 
   // Senses from robot position x (paper §II): localizes every familiar obstacle within distance
-  // R, recomputes the visible fragments. Returns true (and increments the version once) when
-  // the map changed. O(obstacles); with nothing new it allocates nothing. Throws rearm::Error
-  // when x is not finite.
+  // R, recomputes the visible fragments (when x is scan_spacing from the last reading). Returns
+  // true (and increments the version once) when the map changed. O(obstacles); with nothing new it
+  // allocates nothing. Throws rearm::Error when x is not finite.
   bool update(const Point& robot);
 
   // Movable objects (paper §II: positions known at all times). Each returns true (and increments
@@ -106,6 +114,7 @@ class SemanticMap {
   std::vector<Polygon> unknown_;
   std::vector<std::string> unknown_ids_;
   std::optional<Point> last_robot_;  // robot position of the last update
+  std::optional<Point> scanned_;     // robot position of the last reading of the fragments
 
   std::vector<Point> reported_;  // per movable object: centre at the last version change
   std::optional<std::string> carried_;

@@ -52,6 +52,10 @@ struct Controller {
   // i.e. about R away from the robot, so a stale fragment only misses parts at least R - 0.1 m
   // away; 0.1 m halves the rebuilds of 0.05 m (fig5: 369 instead of 720).
   double fragment_tolerance = 0.1;
+  // m: the unknown fragments are read again only once the robot has travelled this far since
+  // the last reading (perception::ChangeTolerances::scan_spacing; at most R/4); 0 (the default,
+  // the paper's sensor) reads them at every step. Opt-in: see docs/reactive.md §2.
+  double scan_spacing = 0;
   // The interface layer's behaviour where [7]'s separation assumptions break
   // (experiments/sweeps/README.md, "Variants"): "robust" (the default) runs the extensions of
   // executive::RobustParams, each switchable below; "paper" runs none (the paper's choices).

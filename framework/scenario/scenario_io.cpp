@@ -83,6 +83,7 @@ void read_controller(Reader& r, const YAML::Node& n, Controller& c) {
                   "k_omega",
                   "goal_tolerance",
                   "fragment_tolerance",
+                  "scan_spacing",
                   "variant",
                   "guide",
                   "convex_fallback",
@@ -109,7 +110,8 @@ void read_controller(Reader& r, const YAML::Node& n, Controller& c) {
                           {"k_v", &c.k_v},
                           {"k_omega", &c.k_omega},
                           {"goal_tolerance", &c.goal_tolerance},
-                          {"fragment_tolerance", &c.fragment_tolerance}};
+                          {"fragment_tolerance", &c.fragment_tolerance},
+                          {"scan_spacing", &c.scan_spacing}};
   for (const auto& [key, value] : fields) {
     if (auto v = f.find(key)) *value = r.number(*v, f.child(key));
   }
@@ -275,7 +277,8 @@ std::string to_yaml(const Scenario& s) {
   out << "controller: {p: " << c.p << ", epsilon: " << num(c.epsilon) << ", mu1: " << num(c.mu1)
       << ", mu2: " << num(c.mu2) << ", k_v: " << num(c.k_v) << ", k_omega: " << num(c.k_omega)
       << ", goal_tolerance: " << num(c.goal_tolerance)
-      << ", fragment_tolerance: " << num(c.fragment_tolerance) << ", variant: " << c.variant;
+      << ", fragment_tolerance: " << num(c.fragment_tolerance)
+      << ", scan_spacing: " << num(c.scan_spacing) << ", variant: " << c.variant;
   if (c.variant == "robust") {
     for (const RobustSwitch& w : kRobustSwitches) {
       out << ", " << w.key << ": " << (c.*w.flag ? "true" : "false");

@@ -142,6 +142,39 @@ TEST(SemanticMapTest, FragmentToleranceAccumulatesMotion) {
   }
 }
 
+// With a scan spacing s, the fragments are read again only once the robot is s from the last
+// reading: along the wall in steps of 0.03 m with s = 0.1 m, readings at 0, 0.12, 0.24, ...
+// (every fourth step), each fragment the one a fresh map reads at that point; familiar
+// obstacles are still localized at the step they come into range.
+TEST(SemanticMapTest, ScanSpacingReadsFragmentsEverySpacingOfTravel) {
+  ChangeTolerances tol;
+  tol.scan_spacing = 0.1;
+  SemanticMap map(scene(), Sensor({.range = kR}), tol);
+  const Point start(23, 0);
+  EXPECT_TRUE(map.update(start));
+  Point read = start;
+  for (int k = 1; k <= 40; ++k) {
+    const Point x = start + Point(0.03 * k, 0);
+    const bool changed = map.update(x);
+    EXPECT_EQ(changed, k % 4 == 0) << k;
+    if (changed) read = x;
+    SemanticMap fresh(scene(), Sensor({.range = kR}));
+    fresh.update(read);
+    ASSERT_EQ(map.unknown().size(), 1u);
+    EXPECT_EQ(map.unknown()[0].vertices, fresh.unknown()[0].vertices) << k;
+  }
+  // Walking to the familiar obstacles: A comes into range at x = 3 (its nearest point (5, 0)),
+  // between two readings, and is localized at once.
+  SemanticMap walk(scene(), Sensor({.range = kR}), tol);
+  walk.update(Point(2.95, 0));
+  EXPECT_TRUE(walk.familiar().empty());
+  EXPECT_TRUE(walk.update(Point(3.0, 0)));
+  EXPECT_EQ(walk.familiar_ids(), (std::vector<std::string>{"A"}));
+  // A spacing over a quarter of the sensing range is refused.
+  tol.scan_spacing = kR / 4 + 1e-9;
+  EXPECT_THROW(SemanticMap(scene(), Sensor({.range = kR}), tol), Error);
+}
+
 TEST(SemanticMapTest, ObjectMovesBelowToleranceAccumulate) {
   SemanticMap map(scene(), Sensor({.range = kR}));
   EXPECT_FALSE(map.move_object("M1", Point(0.0005, 5)));

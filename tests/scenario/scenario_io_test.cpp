@@ -137,6 +137,7 @@ void expect_same(const Scenario& a, const Scenario& b) {
   EXPECT_EQ(a.controller.k_omega, b.controller.k_omega);
   EXPECT_EQ(a.controller.goal_tolerance, b.controller.goal_tolerance);
   EXPECT_EQ(a.controller.fragment_tolerance, b.controller.fragment_tolerance);
+  EXPECT_EQ(a.controller.scan_spacing, b.controller.scan_spacing);
   EXPECT_EQ(a.simulation.dt, b.simulation.dt);
   EXPECT_EQ(a.simulation.time_budget, b.simulation.time_budget);
   EXPECT_EQ(a.simulation.velocity_iterations, b.simulation.velocity_iterations);
@@ -509,6 +510,11 @@ TEST(ScenarioErrors, UnknownKey) {
   expect_error(std::string(kBase) + "controller: {p: 20, eps: 1}\n", "controller.eps",
                "unknown key");
   expect_error(std::string(kBase) + "simulation: {steps: 3}\n", "simulation.steps", "unknown key");
+  // The scan spacing: at most a quarter of the sensing range (3 m here), never negative.
+  expect_error(std::string(kBase) + "controller: {scan_spacing: 0.76}\n", "controller.scan_spacing",
+               "must be in [0, robot.sensor_range / 4]");
+  expect_error(std::string(kBase) + "controller: {scan_spacing: -0.1}\n", "controller.scan_spacing",
+               "must be in [0, robot.sensor_range / 4]");
 }
 
 TEST(ScenarioErrors, RepeatedKey) {
@@ -828,7 +834,8 @@ TEST(ScenarioRoundTrip, WrittenForm) {
       "unknown: []\n"
       "task: \"<>move(l1)\"\n"
       "controller: {p: 20, epsilon: 1, mu1: 1, mu2: 0.05, k_v: 1, k_omega: 1, "
-      "goal_tolerance: 0.05, fragment_tolerance: 0.1, variant: robust, guide: true, "
+      "goal_tolerance: 0.05, fragment_tolerance: 0.1, scan_spacing: 0, variant: robust, "
+      "guide: true, "
       "convex_fallback: true, back_out: true, restore: true, drop: true, "
       "early_release: true, withdraw: true, release_point: true, bevel: true, early_dock: true, "
       "face: true, narrow: true, track: true, escape: true}\n"
