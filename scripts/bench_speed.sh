@@ -1,0 +1,101 @@
+#!/usr/bin/env bash
+# Side by side with an earlier revision, in one run (docs/reactive.md §2): the rearm command on
+# a fixed set of scaling-sweep instances and fig5, and the reactive rebuild benchmark, each
+# alternating old and new binaries so that both see the same machine load. Writes
+# results/$MACHINE/speed/{trials.csv,trials.md,reactive_old.json,reactive_new.json}.
+#
+# Usage: bash scripts/bench_speed.sh OLD_REVISION   (e.g. b353188)
+# The old revision is built in a git worktree under build-old/ (Release, rearm and
+# reactive_bench only; about 15 min on 2 cores the first time). Environment: MACHINE (default
+# debian12-2core), BUILD (default build), OLD_BUILD (an existing build of the old revision,
+# skips the worktree). The instances are results/$MACHINE/speed/instances/,
+# nine of the scaling sweep's (experiments/sweeps/scaling.yaml) across N and density; the
+# old binary takes about 1 min on them.
+set -euo pipefail
+OLD_REV=${1:?usage: bench_speed.sh OLD_REVISION}
+source "$(dirname "$0")/lib/bench_common.sh"
+bench_prepare reactive_bench
+cmake --build "$BUILD" --target rearm -j"$(nproc)"
+SPEED="$OUT/speed"
+mkdir -p "$SPEED"
+if [ -z "${OLD_BUILD:-}" ]; then  # OLD_BUILD: an existing Release build of OLD_REVISION
+  WORK=build-old
+  if [ ! -d "$WORK/src" ]; then
+    git worktree add -f "$WORK/src" "$OLD_REV"
+  fi
+  git -C "$WORK/src" checkout -q --detach "$OLD_REV"
+  cmake -S "$WORK/src" -B "$WORK/build" -DCMAKE_BUILD_TYPE=Release -DREARM_SANITIZE=OFF \
+    -DREARM_BUILD_BENCH=ON > /dev/null
+  cmake --build "$WORK/build" --target rearm reactive_bench -j"$(nproc)"
+  OLD_BUILD="$WORK/build"
+fi
+OLD="$OLD_BUILD/bin"
+NEW="$BUILD/bin"
+
+TMP=$(mktemp -d)
+trap 'rm -rf "$TMP"' EXIT
+echo "instance,version,status,sim_time_s,rebuilds,controller_time_s,trajectory_sha256" \
+  > "$SPEED/trials.csv"
+run() {  # version binary scenario-file name
+  "$2/rearm" run "$3" --out "$TMP/$1/$4" --no-animation --no-plot > /dev/null
+  python3 - "$TMP/$1/$4" "$4" "$1" >> "$SPEED/trials.csv" <<'PY'
+import hashlib, json, sys
+d, name, version = sys.argv[1:4]
+m = json.load(open(f"{d}/metrics.json"))
+h = hashlib.sha256(open(f"{d}/trajectory.json", "rb").read()).hexdigest()[:16]
+print(f"{name},{version},{m['status']},{m['sim_time_s']:.2f},{m['rebuilds']},"
+      f"{m['controller_time_s']:.4f},{h}")
+PY
+}
+for f in "$SPEED"/instances/*.yaml; do
+  n=$(basename "$f" .yaml)
+  run old "$OLD" "$f" "$n"
+  run new "$NEW" "$f" "$n"
+done
+for k in 1 2 3; do
+  run old "$OLD" experiments/scenarios/fig5.yaml fig5
+  run new "$NEW" experiments/scenarios/fig5.yaml fig5
+done
+
+FILTER='(MappedSpace|DiffeoConstruction|ReactiveRebuild|UnicycleCommand)/K:(10|20)/'
+for v in old new; do
+  bin=$([ $v = old ] && echo "$OLD" || echo "$NEW")
+  "$bin/reactive_bench" --benchmark_filter="$FILTER" --benchmark_repetitions=3 \
+    --benchmark_report_aggregates_only=true --benchmark_out="$SPEED/reactive_$v.json" \
+    --benchmark_out_format=json > /dev/null
+done
+
+python3 - "$SPEED" "$OLD_REV" "$REV" "$LOAD" <<'PY'
+import csv, json, sys
+speed, old_rev, rev, load = sys.argv[1:5]
+rows = list(csv.DictReader(open(f"{speed}/trials.csv")))
+by = {}
+for r in rows:
+    by.setdefault(r["instance"], {}).setdefault(r["version"], []).append(r)
+out = [f"# Side by side: {old_rev} (old) and {rev} (new), one run (load {load})", "",
+       "`bash scripts/bench_speed.sh " + old_rev + "`. Controller time: the fastest of the runs.", "",
+       "| instance | status old / new | simulated s | rebuilds | controller old | new | ratio | same trajectory |",
+       "|---|---|---|---|---|---|---|---|"]
+for name, v in by.items():
+    o, n = v["old"], v["new"]
+    to = min(float(r["controller_time_s"]) for r in o)
+    tn = min(float(r["controller_time_s"]) for r in n)
+    same = o[0]["trajectory_sha256"] == n[0]["trajectory_sha256"]
+    out.append(f"| {name} | {o[0]['status']} / {n[0]['status']} | {o[0]['sim_time_s']} / "
+               f"{n[0]['sim_time_s']} | {o[0]['rebuilds']} / {n[0]['rebuilds']} | {to:.3f} s | "
+               f"{tn:.3f} s | {to / tn:.2f} | {'yes' if same else 'no'} |")
+def med(path):
+    res = {}
+    for b in json.load(open(path))["benchmarks"]:
+        if b.get("aggregate_name") == "median":
+            res[b["run_name"]] = (b["real_time"], b["time_unit"])
+    return res
+old, new = med(f"{speed}/reactive_old.json"), med(f"{speed}/reactive_new.json")
+out += ["", "| benchmark | old | new | ratio |", "|---|---|---|---|"]
+for name in new:
+    if name in old:
+        (a, u), (b, _) = old[name], new[name]
+        out.append(f"| {name} | {a:.4g} {u} | {b:.4g} {u} | {a / b:.2f} |")
+open(f"{speed}/trials.md", "w").write("\n".join(out) + "\n")
+print("\n".join(out))
+PY
