@@ -799,7 +799,16 @@ bool Executive::plan_guide(Activity& a, const Point& center, double t, std::stri
     note = " (after " + std::to_string(a.guides) + " guide paths)";
     return false;
   }
-  const auto path = guide_path(controller_.mapped().freespace, center, a.goal, p_.guide);
+  // Robust variant (RobustParams::widen): each guide after a failed one keeps kGuideWiden more
+  // clearance than the last, so that it leaves the passage where the pair stalled for a wider
+  // way round when there is one (the plain path otherwise).
+  std::optional<std::vector<Point>> path;
+  if (p_.robust.widen && a.guides > 0) {
+    GuideParams wide = p_.guide;
+    wide.avoid = kGuideWiden * a.guides;
+    path = guide_path(controller_.mapped().freespace, center, a.goal, wide);
+  }
+  if (!path) path = guide_path(controller_.mapped().freespace, center, a.goal, p_.guide);
   if (!path || path->size() < 2) {
     note = path ? " (x* is in sight: no guide helps)" : " (no guide path in the known freespace)";
     return false;

@@ -86,6 +86,8 @@ inline constexpr double kNarrowSlacks[] = {0.05, 0.1, 0.2};
 // along each straight escape.
 inline constexpr int kEscapeHeadings = 32;
 inline constexpr double kEscapeSample = 0.02;
+// m of extra clearance each failed guide path asks of the next (RobustParams::widen).
+inline constexpr double kGuideWiden = 0.1;
 
 struct RobustParams {
   // When the progress monitor fires, follow waypoints of a path in the known freespace
@@ -173,6 +175,13 @@ struct RobustParams {
   // (measured: the robot stayed there through four back-ups). Turning in place keeps a disk
   // robot where it is.
   bool escape = true;
+  // Each guide path after a failed one (the progress monitor fired again while following it)
+  // avoids what is closer than kGuideWiden more to ∂F_k than the last did (GuideParams::avoid),
+  // except near the robot and x*, and falls back to the plain path when that finds none. The
+  // plain A* takes the shortest way every time: measured, a pair that stalled at an object
+  // dropped in a passage was guided into the same passage four times while a wide way round
+  // was free. The paper has no guide.
+  bool widen = true;
   double withdraw_clearance = 0.25;  // m beyond the pair's dilation radius
   double withdraw_max = 1.0;         // m of straight reverse travel at most
   int max_back_outs = 4;             // per action

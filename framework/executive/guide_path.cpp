@@ -154,6 +154,7 @@ std::optional<int> endpoint_cell(const Raster& g, const Region& r, const Point& 
 // A* over 8-neighbours; returns cell indices from start to goal.
 std::optional<std::vector<int>> search(const Raster& g, int start, int goal, const GuideParams& p) {
   const Point target = g.center(goal % g.nx, goal / g.nx);
+  const Point source = g.center(start % g.nx, start / g.nx);
   std::vector<float> cost(g.free.size(), kInf);
   std::vector<int> parent(g.free.size(), -1);
   using Entry = std::pair<float, int>;
@@ -174,6 +175,10 @@ std::optional<std::vector<int>> search(const Raster& g, int start, int goal, con
       if (ni < 0 || nj < 0 || ni >= g.nx || nj >= g.ny) continue;
       const int n = g.index(ni, nj);
       if (!g.free[n]) continue;
+      if (g.clear[n] < p.avoid && (g.center(ni, nj) - source).norm() > kAvoidExempt &&
+          (g.center(ni, nj) - target).norm() > kAvoidExempt) {
+        continue;
+      }
       // A diagonal step needs both orthogonal neighbours free (no corner cutting).
       if (k >= 4 && (!g.free[g.index(ni, j)] || !g.free[g.index(i, nj)])) continue;
       const double shortfall = std::max(0.0, 1.0 - g.clear[n] / p.comfort);
@@ -253,6 +258,9 @@ void validate(const GuideParams& p) {
     if (!std::isfinite(v) || !(v > 0)) {
       throw Error(std::string("guide: ") + name + " must be finite and > 0");
     }
+  }
+  if (!std::isfinite(p.avoid) || p.avoid < 0) {
+    throw Error("guide: avoid must be finite and >= 0");
   }
   if (p.max_cells < 16) throw Error("guide: max_cells must be at least 16");
   if (p.max_recoveries < 0) throw Error("guide: max_recoveries must be >= 0");

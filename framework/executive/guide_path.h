@@ -32,7 +32,13 @@ struct GuideParams {
   double clearance = 0.05;            // m: clearance of a shortcut segment from ∂F_k
   double reach = 0.15;                // m: a waypoint counts as reached this close
   int max_recoveries = 4;             // recoveries per action before it ends stuck
+  // m: cells closer than this to ∂F_k are not entered, but within kAvoidExempt of either
+  // endpoint (the robot may stand in a tight spot, the goal lie in one); 0: none avoided.
+  double avoid = 0;
 };
+
+// Distance (m) from the endpoints within which GuideParams::avoid does not apply.
+inline constexpr double kAvoidExempt = 0.75;
 
 // Throws rearm::Error naming the first field that is not finite and > 0 (max_recoveries >= 0).
 void validate(const GuideParams& p);

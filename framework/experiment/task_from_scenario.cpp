@@ -1,5 +1,7 @@
 #include "experiment/task_from_scenario.h"
 
+#include <algorithm>
+
 #include "ltl/parser.h"
 #include "scenario/scenario_io.h"
 #include "symbolic/mission_controller.h"
@@ -40,7 +42,10 @@ executive::TaskSpec task_spec(const scenario::Scenario& s) {
   t.formula = s.task;
   t.sensor.range = s.robot.sensor_range;
   t.map_tolerances.fragment = s.controller.fragment_tolerance;
-  t.map_tolerances.scan_spacing = s.controller.scan_spacing;
+  // At most a quarter of the sensing range (the semantic map's bound): a short-range sensor
+  // reads at least four times per R of travel.
+  t.map_tolerances.scan_spacing =
+      s.controller.scan ? std::min(s.controller.scan_spacing, s.robot.sensor_range / 4) : 0;
   executive::ExecutiveParams& e = t.executive;
   e.robot_radius = s.robot.radius;
   e.diffeo.p = s.controller.p;
@@ -67,6 +72,7 @@ executive::TaskSpec task_spec(const scenario::Scenario& s) {
   e.robust.narrow = s.controller.narrow;
   e.robust.track = s.controller.track;
   e.robust.escape = s.controller.escape;
+  e.robust.widen = s.controller.widen;
   if (s.controller.variant == "paper") e.robust.contact_margin = 0;
   e.max_ltl_actions = s.simulation.max_actions;
   return t;

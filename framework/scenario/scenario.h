@@ -37,6 +37,9 @@ struct Object {
   geometry::Disk disk;  // start position and radius ρ_i
 };
 
+// m: the robust variant's default scan spacing (Controller::scan_spacing).
+inline constexpr double kScanSpacing = 0.2;
+
 // The reactive controller's and the executive's parameters (defaults: rearm's, as in
 // reactive::DiffeoParams, reactive::NavParams and executive::ExecutiveParams).
 struct Controller {
@@ -52,10 +55,10 @@ struct Controller {
   // i.e. about R away from the robot, so a stale fragment only misses parts at least R - 0.1 m
   // away; 0.1 m halves the rebuilds of 0.05 m (fig5: 369 instead of 720).
   double fragment_tolerance = 0.1;
-  // m: the unknown fragments are read again only once the robot has travelled this far since
-  // the last reading (perception::ChangeTolerances::scan_spacing; at most R/4); 0 (the default,
-  // the paper's sensor) reads them at every step. Opt-in: see docs/reactive.md §2.
-  double scan_spacing = 0;
+  // m: with `scan` on, the unknown fragments are read again only once the robot has travelled
+  // this far since the last reading (perception::ChangeTolerances::scan_spacing; at most R/4,
+  // docs/reactive.md §2). Without `scan` (the paper variant) they are read at every step.
+  double scan_spacing = kScanSpacing;
   // The interface layer's behaviour where [7]'s separation assumptions break
   // (experiments/sweeps/README.md, "Variants"): "robust" (the default) runs the extensions of
   // executive::RobustParams, each switchable below; "paper" runs none (the paper's choices).
@@ -74,6 +77,8 @@ struct Controller {
   bool narrow = true;           // robust only: Fix mode for objects narrowing a failed passage
   bool track = true;            // robust only: follow guide paths straight, segment by segment
   bool escape = true;           // robust only: back up along the clearest straight line
+  bool widen = true;            // robust only: each failed guide's successor keeps more clearance
+  bool scan = true;             // robust only: read unknown fragments every scan_spacing
 };
 
 // The robust variant's switches by key (scenario files; the ablation methods "rearm-no<key>").
@@ -88,7 +93,8 @@ inline constexpr RobustSwitch kRobustSwitches[] = {
     {"withdraw", &Controller::withdraw}, {"release_point", &Controller::release_point},
     {"bevel", &Controller::bevel},       {"early_dock", &Controller::early_dock},
     {"face", &Controller::face},         {"narrow", &Controller::narrow},
-    {"track", &Controller::track},       {"escape", &Controller::escape}};
+    {"track", &Controller::track},       {"escape", &Controller::escape},
+    {"widen", &Controller::widen},       {"scan", &Controller::scan}};
 
 // Sets the variant ("robust" or "paper") and every switch: all on, or all off.
 inline void set_variant(Controller& c, const std::string& variant) {

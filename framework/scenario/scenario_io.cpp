@@ -98,7 +98,9 @@ void read_controller(Reader& r, const YAML::Node& n, Controller& c) {
                   "face",
                   "narrow",
                   "track",
-                  "escape"});
+                  "escape",
+                  "widen",
+                  "scan"});
   struct Field {
     const char* key;
     double* value;

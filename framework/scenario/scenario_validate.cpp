@@ -216,14 +216,7 @@ class Validator {
     positive(c.k_omega, "controller.k_omega");
     positive(c.goal_tolerance, "controller.goal_tolerance");
     positive(c.fragment_tolerance, "controller.fragment_tolerance");
-    // The semantic map's bound (perception/semantic_map.h, kMaxScanSpacingFraction), checked
-    // here to name the key.
-    if (!std::isfinite(c.scan_spacing) || c.scan_spacing < 0 ||
-        c.scan_spacing > s_.robot.sensor_range / 4) {
-      fail("controller.scan_spacing", "must be in [0, robot.sensor_range / 4] (sensor_range " +
-                                          num(s_.robot.sensor_range) + "), got " +
-                                          num(c.scan_spacing));
-    }
+    positive(c.scan_spacing, "controller.scan_spacing");
   }
 
   void simulation() const {

@@ -87,6 +87,43 @@ TEST(GuidePath, ThreadsANarrowPassageWhenItIsTheOnlyWay) {
   EXPECT_LE(length, 6.5);
 }
 
+// GuideParams::avoid: a wall across the room with a 0.4 m gap (clearance 0.2 m at its middle)
+// on the straight line and a 3 m opening 4 m away. The plain path takes the gap; with avoid
+// 0.3 m it goes round through the opening (longer than the taut string through it, computed by
+// hand), every point of it farther than 0.3 m from the wall away from the endpoints; with the
+// gap's cells near an endpoint (exempt) the gap is taken again.
+TEST(GuidePath, AvoidGoesRoundAPassageNarrowerThanAsked) {
+  // Room 12 x 12; wall x in [5.8, 6.2] from y = 0 to 5.8 and from 6.2 to 9 (gap y in (5.8, 6.2)),
+  // opening y in (9, 12).
+  const Region r{rect(0, 0, 12, 12), {rect(5.8, 0.01, 6.2, 5.8), rect(5.8, 6.2, 6.2, 9)}};
+  const Point from(2, 6), to(10, 6);
+  const auto plain = guide_path(r, from, to, GuideParams{});
+  ASSERT_TRUE(plain.has_value());
+  EXPECT_LE(check_inside(r, from, *plain), 8.5);  // through the gap: 8 m straight
+  GuideParams wide;
+  wide.avoid = 0.3;
+  const auto round = guide_path(r, from, to, wide);
+  ASSERT_TRUE(round.has_value());
+  // Through the opening: at least the taut string over the wall's top corner (5.8, 9) and
+  // (6.2, 9), i.e. 2·hypot(3.8, 3) + 0.4.
+  EXPECT_GE(check_inside(r, from, *round), 2 * std::hypot(3.8, 3.0) + 0.4 - 1e-9);
+  Point a = from;
+  for (const Point& b : *round) {
+    for (int k = 0; k <= 100; ++k) {
+      const Point q = a + (b - a) * (k / 100.0);
+      if ((q - from).norm() <= kAvoidExempt || (q - to).norm() <= kAvoidExempt) continue;
+      EXPECT_FALSE(q.x() > 5.5 && q.x() < 6.5 && q.y() < 9) << q.x() << ", " << q.y();
+    }
+    a = b;
+  }
+  // Endpoints beside the gap: its cells are exempt, and the path goes through it.
+  const auto near = guide_path(r, Point(5.5, 6), Point(6.5, 6), wide);
+  ASSERT_TRUE(near.has_value());
+  EXPECT_LE(check_inside(r, Point(5.5, 6), *near), 1.5);
+  wide.avoid = -0.1;
+  EXPECT_THROW(validate(wide), Error);
+}
+
 TEST(GuidePath, NoPathBetweenComponentsOrFromOutside) {
   // A closed room (the hole's ring) inside a ring-shaped region: the inside of the hole is not
   // in the region, and the region's two sides of a closed wall are one component, so use a
