@@ -607,6 +607,8 @@ Executive::Advance Executive::rebuild(Activity& a, double radius, const Point& c
       out.kind = Advance::kStuck;
       out.reason =
           "the disassembly target " + point_text(target) + " is not reachable: " + rr.message;
+    } else if (std::optional<Advance> f = fragment_blockers(a, radius, center)) {
+      return *f;
     } else {
       out.kind = Advance::kInfeasible;
       out.reason = "x* = " + point_text(target) +
@@ -779,6 +781,43 @@ std::optional<Executive::Advance> Executive::narrow(Activity& a, const Pose& pos
     return out;
   }
   return std::nullopt;
+}
+
+// Robust variant (RobustParams::fragments): the reactive controller finds x* cut off from the
+// centre where the topology check, which models the familiar obstacles and the objects only
+// (paper Appendix III), did not: visible unknown fragments close the way, with objects or
+// without. The check runs again with the fragments as fixed obstacles (mitered, a superset of
+// the controller's round dilations); objects that close the way with them are moved by Fix mode
+// (paper §IV), once per action. nullopt when fixed obstacles alone close it.
+std::optional<Executive::Advance> Executive::fragment_blockers(Activity& a, double radius,
+                                                               const Point& center) {
+  if (!p_.robust.fragments || a.fragments_checked || !a.target) return std::nullopt;
+  a.fragments_checked = true;
+  std::vector<geometry::Polygon> fixed = map_.familiar();
+  fixed.insert(fixed.end(), map_.unknown().begin(), map_.unknown().end());
+  topology::TopologyResult res;
+  try {
+    const ScopedStopwatch sw(times_.topology_s);
+    res = topology::check_topology(
+        topology::make_input(map_.workspace(), fixed, map_.movable(), radius, center, *a.target));
+    ++topology_checks_;
+  } catch (const topology::CenterNotFree&) {
+    return std::nullopt;
+  }
+  if (res.verdict != topology::Verdict::kBlockedByObjects) return std::nullopt;
+  Advance out;
+  const auto& ids = map_.movable_ids();
+  for (std::size_t i : res.blocking) {
+    if (ids[i] != a.object) out.blocking.push_back(ids[i]);  // GRASP's own object stays
+  }
+  if (out.blocking.empty()) return std::nullopt;
+  out.kind = Advance::kBlocked;
+  out.reason = "objects close the way to x* together with visible unknown obstacles: " + res.reason;
+  ++recoveries_.fragment_fixes;
+  a.guides = 0;
+  a.back_outs = 0;
+  a.contact_outs = 0;
+  return out;
 }
 
 // Robust variant (RobustParams::early_dock): within kEarlyDockReach of the approach circle, and

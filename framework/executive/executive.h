@@ -182,6 +182,13 @@ struct RobustParams {
   // dropped in a passage was guided into the same passage four times while a wide way round
   // was free. The paper has no guide.
   bool widen = true;
+  // When the reactive controller finds x* cut off from the centre although the topology check
+  // (familiar obstacles and objects only, paper Appendix III) found it reachable, visible
+  // unknown fragments close the way, alone or together with objects: the check runs again with
+  // the fragments as fixed obstacles, and objects that close the way with them are moved by Fix
+  // mode (once per action). Measured: a RELEASE whose region lay past a gap between an unknown
+  // obstacle and an object released earlier ended infeasible, the object never named.
+  bool fragments = true;
   double withdraw_clearance = 0.25;  // m beyond the pair's dilation radius
   double withdraw_max = 1.0;         // m of straight reverse travel at most
   int max_back_outs = 4;             // per action
@@ -200,6 +207,7 @@ struct RecoveryCounts {
   int early_docks = 0;     // GRASPs docked from where the robot stalled beside the object
   int faces = 0;           // turns toward the goal after a back-up
   int narrows = 0;         // Fix-mode entries for objects narrowing a passage the law failed
+  int fragment_fixes = 0;  // Fix-mode entries for objects closing the way with unknown obstacles
 };
 
 struct ExecutiveParams {
@@ -348,12 +356,13 @@ class Executive {
     int backing_dir = -1;          // index into the back-up moves, -1: choose one
     std::optional<Escape> escape;  // RobustParams::escape: this back-up's line (none: moves)
     bool convex_all = false;
-    int contact_outs = 0;         // back-ups off ∂F_k when the monitor fired (kContactClearance)
-    bool narrowed = false;        // RobustParams::narrow was tried for this action
-    bool tracking = false;        // the guide is followed straight (RobustParams::track)
-    Facing facing = Facing::kNo;  // turn toward the law's goal first (RobustParams::face)
-    bool guide_pending = false;   // plan a guide at the next rebuild (after such a back-up)
-    int retargets = 0;            // drop points chosen again after a fragment took one
+    int contact_outs = 0;   // back-ups off ∂F_k when the monitor fired (kContactClearance)
+    bool narrowed = false;  // RobustParams::narrow was tried for this action
+    bool fragments_checked = false;  // RobustParams::fragments was tried for this action
+    bool tracking = false;           // the guide is followed straight (RobustParams::track)
+    Facing facing = Facing::kNo;     // turn toward the law's goal first (RobustParams::face)
+    bool guide_pending = false;      // plan a guide at the next rebuild (after such a back-up)
+    int retargets = 0;               // drop points chosen again after a fragment took one
     std::vector<Point> rejected_drops;
     std::string name() const;
   };
@@ -385,6 +394,7 @@ class Executive {
   Advance back_off(Activity& a, const Pose& pose, double t, double dt);
   Advance navigate(Activity& a, const Pose& pose, double t, double dt);
   std::optional<Advance> narrow(Activity& a, const Pose& pose);
+  std::optional<Advance> fragment_blockers(Activity& a, double radius, const Point& center);
   void remember_plan(Activity& a) const;
   Advance plan_disassemble(Activity& a, double radius, const Point& center, double rho);
   std::optional<Point> drop_point(const Activity& a, const geometry::Region& free, double radius,

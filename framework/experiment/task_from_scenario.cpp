@@ -73,6 +73,7 @@ executive::TaskSpec task_spec(const scenario::Scenario& s) {
   e.robust.track = s.controller.track;
   e.robust.escape = s.controller.escape;
   e.robust.widen = s.controller.widen;
+  e.robust.fragments = s.controller.fragments;
   if (s.controller.variant == "paper") e.robust.contact_margin = 0;
   e.max_ltl_actions = s.simulation.max_actions;
   return t;

@@ -91,6 +91,7 @@ void outcome_fields(const TrialRecord& r, std::vector<std::string>& f) {
   f.push_back(integer(o.recoveries.early_docks));
   f.push_back(integer(o.recoveries.faces));
   f.push_back(integer(o.recoveries.narrows));
+  f.push_back(integer(o.recoveries.fragment_fixes));
   f.push_back(integer(o.collisions));
   f.push_back(exact(o.min_clearance_m));
   f.push_back(integer(o.queries));
@@ -151,6 +152,7 @@ const std::vector<std::string>& trial_columns() {
                                                    "early_docks",
                                                    "faces",
                                                    "narrows",
+                                                   "fragment_fixes",
                                                    "collisions",
                                                    "min_clearance_m",
                                                    "queries",

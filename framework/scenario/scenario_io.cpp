@@ -100,7 +100,8 @@ void read_controller(Reader& r, const YAML::Node& n, Controller& c) {
                   "track",
                   "escape",
                   "widen",
-                  "scan"});
+                  "scan",
+                  "fragments"});
   struct Field {
     const char* key;
     double* value;

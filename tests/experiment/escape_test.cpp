@@ -10,6 +10,7 @@
 #include "experiment/run_scenario.h"
 #include "geometry/polygon.h"
 #include "scenario/scenario.h"
+#include "support/scenario_runs.h"
 #include "support/task_scenes.h"
 
 namespace rearm::experiment {
@@ -45,16 +46,8 @@ scenario::Scenario apex_scene(bool escape) {
 class Escape : public ::testing::TestWithParam<PlantKind> {};
 
 TEST_P(Escape, TheRobotLeavesTheApexAlongTheClearestLine) {
-  RunOptions o;
-  o.plant = GetParam();
-  const scenario::Scenario s = apex_scene(true);
-  const RunRecord r = run_scenario(s, o);
-  ASSERT_EQ(r.result.status, executive::TaskStatus::kCompleted) << r.result.reason;
-  EXPECT_EQ(r.result.collisions, 0);
-  EXPECT_GT(r.result.min_clearance, 0);
+  const RunRecord r = test_support::expect_reaches_first_region(apex_scene(true), GetParam());
   EXPECT_GE(r.result.recoveries.back_outs, 1);
-  ASSERT_FALSE(r.result.path.empty());
-  EXPECT_TRUE(geometry::contains(s.regions[0].polygon, r.result.path.back().x));
 }
 
 TEST_P(Escape, WithoutItTheBackUpsAlongTheHeadingDoNotLeave) {
@@ -68,10 +61,7 @@ TEST_P(Escape, WithoutItTheBackUpsAlongTheHeadingDoNotLeave) {
 
 INSTANTIATE_TEST_SUITE_P(Plants, Escape,
                          ::testing::Values(PlantKind::kKinematic, PlantKind::kBox2d),
-                         [](const auto& info) {
-                           return info.param == PlantKind::kKinematic ? std::string("kinematic")
-                                                                      : std::string("box2d");
-                         });
+                         test_support::plant_name);
 
 }  // namespace
 }  // namespace rearm::experiment
