@@ -152,8 +152,9 @@ TEST(MappedSpace, IncrementalBuilderGivesTheWholeConstruction) {
       expect_same_space(*expected, got);
     }
   }
-  EXPECT_GT(incremental, 20);
-  EXPECT_GT(whole, 20);
+  // Both paths and the refusal taken (at every scale: REARM_TEST_SCALE shrinks the scene count).
+  EXPECT_GE(incremental, scenes);
+  EXPECT_GE(whole, scenes);
   EXPECT_GT(not_free, 0);
 }
 
