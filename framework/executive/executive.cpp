@@ -743,7 +743,6 @@ std::optional<Executive::Advance> Executive::narrow(Activity& a, const Pose& pos
   if (!p_.robust.narrow || a.narrowed || !a.target) return std::nullopt;
   a.narrowed = true;
   const auto [rho, radius, center] = moving(a, pose);
-  const auto& ids = map_.movable_ids();
   for (double slack : kNarrowSlacks) {
     std::vector<geometry::Disk> grown = map_.movable();
     for (geometry::Disk& d : grown) d.radius += slack;
@@ -766,21 +765,33 @@ std::optional<Executive::Advance> Executive::narrow(Activity& a, const Pose& pos
       }
       res.reason = "the robot's centre lies within " + fmt(slack) + " m of their dilations";
     }
-    Advance out;
-    for (std::size_t i : blocking) {
-      if (ids[i] != a.object) out.blocking.push_back(ids[i]);  // GRASP's own object stays
-    }
-    if (out.blocking.empty()) return std::nullopt;
-    out.kind = Advance::kBlocked;
-    out.reason = "objects narrow the passage to x* below what the law got through (grown by " +
-                 fmt(slack) + " m): " + res.reason;
-    ++recoveries_.narrows;
-    a.guides = 0;
-    a.back_outs = 0;
-    a.contact_outs = 0;
+    std::optional<Advance> out =
+        fix_mode_for(a, blocking,
+                     "objects narrow the passage to x* below what the law got through (grown by " +
+                         fmt(slack) + " m): " + res.reason);
+    if (out) ++recoveries_.narrows;
     return out;
   }
   return std::nullopt;
+}
+
+// Fix mode (paper §IV) for the objects `blocking` (indices into the map's movable objects) but
+// the action's own object, with the action's recovery counts reset; nullopt when none is left.
+std::optional<Executive::Advance> Executive::fix_mode_for(Activity& a,
+                                                          const std::vector<std::size_t>& blocking,
+                                                          std::string reason) {
+  Advance out;
+  const auto& ids = map_.movable_ids();
+  for (std::size_t i : blocking) {
+    if (ids[i] != a.object) out.blocking.push_back(ids[i]);  // GRASP's own object stays
+  }
+  if (out.blocking.empty()) return std::nullopt;
+  out.kind = Advance::kBlocked;
+  out.reason = std::move(reason);
+  a.guides = 0;
+  a.back_outs = 0;
+  a.contact_outs = 0;
+  return out;
 }
 
 // Robust variant (RobustParams::fragments): the reactive controller finds x* cut off from the
@@ -805,18 +816,10 @@ std::optional<Executive::Advance> Executive::fragment_blockers(Activity& a, doub
     return std::nullopt;
   }
   if (res.verdict != topology::Verdict::kBlockedByObjects) return std::nullopt;
-  Advance out;
-  const auto& ids = map_.movable_ids();
-  for (std::size_t i : res.blocking) {
-    if (ids[i] != a.object) out.blocking.push_back(ids[i]);  // GRASP's own object stays
-  }
-  if (out.blocking.empty()) return std::nullopt;
-  out.kind = Advance::kBlocked;
-  out.reason = "objects close the way to x* together with visible unknown obstacles: " + res.reason;
-  ++recoveries_.fragment_fixes;
-  a.guides = 0;
-  a.back_outs = 0;
-  a.contact_outs = 0;
+  std::optional<Advance> out = fix_mode_for(
+      a, res.blocking,
+      "objects close the way to x* together with visible unknown obstacles: " + res.reason);
+  if (out) ++recoveries_.fragment_fixes;
   return out;
 }
 

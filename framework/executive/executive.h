@@ -395,6 +395,8 @@ class Executive {
   Advance navigate(Activity& a, const Pose& pose, double t, double dt);
   std::optional<Advance> narrow(Activity& a, const Pose& pose);
   std::optional<Advance> fragment_blockers(Activity& a, double radius, const Point& center);
+  std::optional<Advance> fix_mode_for(Activity& a, const std::vector<std::size_t>& blocking,
+                                      std::string reason);
   void remember_plan(Activity& a) const;
   Advance plan_disassemble(Activity& a, double radius, const Point& center, double rho);
   std::optional<Point> drop_point(const Activity& a, const geometry::Region& free, double radius,

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "ltl/parser.h"
+#include "perception/semantic_map.h"
 #include "scenario/scenario_io.h"
 #include "symbolic/mission_controller.h"
 
@@ -45,7 +46,9 @@ executive::TaskSpec task_spec(const scenario::Scenario& s) {
   // At most a quarter of the sensing range (the semantic map's bound): a short-range sensor
   // reads at least four times per R of travel.
   t.map_tolerances.scan_spacing =
-      s.controller.scan ? std::min(s.controller.scan_spacing, s.robot.sensor_range / 4) : 0;
+      s.controller.scan ? std::min(s.controller.scan_spacing,
+                                   s.robot.sensor_range / perception::kMaxScanSpacingFraction)
+                        : 0;
   executive::ExecutiveParams& e = t.executive;
   e.robot_radius = s.robot.radius;
   e.diffeo.p = s.controller.p;
