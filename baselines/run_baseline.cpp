@@ -339,9 +339,9 @@ std::string baseline_metrics_json(const scenario::Scenario& s, const BaselineRec
   j.key("real_time_factor").value(e.wall_time > 0 ? e.sim_time / e.wall_time : 0.0);
   j.key("fix_mode_entries").value(0);
   j.key("recoveries").begin_object();  // rearm's robust variant only
-  for (const char* k :
-       {"guides", "back_outs", "singular_switches", "convex_fallbacks", "restores",
-        "early_releases", "withdrawals", "release_points", "early_docks", "faces", "narrows"}) {
+  for (const char* k : {"guides", "back_outs", "singular_switches", "convex_fallbacks", "restores",
+                        "early_releases", "withdrawals", "release_points", "early_docks", "faces",
+                        "narrows", "fragment_fixes", "pocket_drops"}) {
     j.key(k).value(0);
   }
   j.end_object();

@@ -851,6 +851,18 @@ bool Executive::plan_guide(Activity& a, const Point& center, double t, std::stri
     path = guide_path(controller_.mapped().freespace, center, a.goal, wide);
   }
   if (!path) path = guide_path(controller_.mapped().freespace, center, a.goal, p_.guide);
+  if (path && path->size() < 2 && p_.robust.track && !a.tracking) {
+    // x* in sight (the segment to it keeps the guide's clearance in F_k), yet the law stalled:
+    // drive straight at it (RobustParams::track), the pair centre as a fully actuated point,
+    // which may back the robot in where the law of [7] would have to turn the pair around.
+    a.guide.clear();
+    a.tracking = true;
+    a.facing = Facing::kNo;
+    ++a.guides;
+    ++recoveries_.guides;
+    a.monitor.reset(t);
+    return true;
+  }
   if (!path || path->size() < 2) {
     note = path ? " (x* is in sight: no guide helps)" : " (no guide path in the known freespace)";
     return false;
@@ -1197,8 +1209,8 @@ Executive::Advance Executive::plan_disassemble(Activity& a, double radius, const
   Advance out;
   const topology::TopologyResult res = timed_check(radius, center, center);
   ++topology_checks_;
-  if (p_.robust.drop &&
-      (!a.target || !geometry::contains(res.freespace, *a.target) || !drop_clear(*a.target, rho))) {
+  if (p_.robust.drop && (!a.target || !geometry::contains(res.freespace, *a.target) ||
+                         !drop_kept(a, *a.target, rho))) {
     a.target = drop_point(a, res.freespace, radius, center, rho);
   }
   if (!a.target || !geometry::contains(res.freespace, *a.target)) {
@@ -1215,11 +1227,29 @@ Executive::Advance Executive::plan_disassemble(Activity& a, double radius, const
 
 // The robust variant's drop point: searched in the pair's mapped freespace F_k (the visible
 // unknown fragments included, as the reactive controller will see it); in F when the centre is
-// not in F_k.
-std::optional<Point> Executive::drop_point(const Activity& a, const geometry::Region& free,
-                                           double radius, const Point& center, double rho) {
-  const double need =
-      kDropClearance * (p_.robot_radius + max_object_radius()) + kDropSlack - radius;
+// not in F_k. The nearest point clear of every region and kDropClearance (r + max ρ) from
+// everything known; in a pocket where none is reachable, the nearest at the first of the lower
+// kDropLevels that has one, then the clearest reachable point. Nearest, not clearest: the
+// farther a point, the likelier an unseen fragment takes it (measured: clearest-first chose
+// points 2–3 m away in unexplored space, eight of them taken in turn).
+// As drop_clear for the first level; the lower levels keep the point while it meets their
+// clearance and the region rule (both without the slack the point was chosen with, so that the
+// target does not jump as the map grows).
+bool Executive::drop_kept(const Activity& a, const Point& q, double rho) const {
+  if (a.drop_level == 0) return drop_clear(q, rho);
+  const std::optional<std::string> carried = map_.carried();
+  if (!carried) return false;
+  for (const RegionOfInterest& reg : regions_) {
+    if (geometry::distance(reg.polygon, q) <= p_.robot_radius + rho) return false;
+  }
+  if (a.drop_level >= kDropLevels.size()) return true;
+  return known_clearance(map_, q, *carried) >=
+         kDropLevels[a.drop_level] * (p_.robot_radius + max_object_radius());
+}
+
+std::optional<Point> Executive::drop_point(Activity& a, const geometry::Region& free, double radius,
+                                           const Point& center, double rho) {
+  const double unit = p_.robot_radius + max_object_radius();
   geometry::Region where = free;
   try {
     const ScopedStopwatch sw(times_.rebuild_s);
@@ -1229,14 +1259,34 @@ std::optional<Point> Executive::drop_point(const Activity& a, const geometry::Re
   }
   // Points near a drop point a fragment took before are skipped: fragments are what the sensor
   // sees now, so a point can look clear from one side and not from another.
-  const double avoid = 2 * (p_.robot_radius + max_object_radius());
-  auto accept = [&](const Point& q) {
+  const double avoid = 2 * unit;
+  const double pair = p_.robot_radius + rho + kDropSlack;
+  auto fresh = [&](const Point& q) {
     for (const Point& x : a.rejected_drops) {
       if ((q - x).norm() < avoid) return false;
     }
-    return drop_clear(q, rho, kDropSlack);
+    for (const RegionOfInterest& reg : regions_) {
+      if (geometry::distance(reg.polygon, q) <= pair) return false;
+    }
+    return true;
   };
-  return nearest_clear_point(where, center, need, accept, p_.guide);
+  std::array<double, kDropLevels.size()> need{};  // from ∂F_k, i.e. minus the pair radius
+  for (std::size_t k = 0; k < need.size(); ++k) need[k] = kDropLevels[k] * unit + kDropSlack;
+  std::array<double, kDropLevels.size()> raster_need{};
+  for (std::size_t k = 0; k < need.size(); ++k) raster_need[k] = need[k] - radius;
+  const std::string carried = map_.carried().value_or("");
+  auto accept = [&](const Point& q, std::size_t k) {
+    return fresh(q) && known_clearance(map_, q, carried) >= need[k];
+  };
+  if (auto q = nearest_clear_point(where, center, raster_need, accept, p_.guide)) {
+    a.drop_level = q->level;
+    if (q->level > 0) ++recoveries_.pocket_drops;
+    return q->point;
+  }
+  auto q = clearest_point(where, center, fresh, p_.guide);
+  a.drop_level = kDropLevels.size();
+  if (q) ++recoveries_.pocket_drops;
+  return q;
 }
 
 Executive::Advance Executive::plan_grasp(Activity& a, const Pose& pose) {

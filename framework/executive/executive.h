@@ -34,6 +34,7 @@
 //    variant turns all of them off.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <map>
 #include <optional>
@@ -60,6 +61,9 @@ namespace rearm::executive {
 // The drop rule's clearance of the pair centre, in units of r + max ρ (the paper's early stop
 // uses 2): 3 leaves at least a pair diameter between the dropped object and anything else.
 inline constexpr double kDropClearance = 3;
+// The drop point's levels of clearance (units of r + max ρ), tried in turn: kDropClearance,
+// then in a pocket where none is reachable lower ones (the paper's early stop uses 2).
+inline constexpr std::array<double, 5> kDropLevels = {kDropClearance, 2.5, 2, 1.5, 1};
 // Drop points chosen again per DISASSEMBLE when a newly seen fragment takes the last one.
 inline constexpr int kMaxDropRetargets = 8;
 // m beyond the approach circle within which RobustParams::early_dock applies.
@@ -109,8 +113,9 @@ struct RobustParams {
   double contact_margin = 0.01;
   // DISASSEMBLE drops the object at the nearest point of the pair's freespace that is clear of
   // every region and kDropClearance (r + max ρ) from everything known (guide_path.h,
-  // nearest_clear_point), and stops early only there; the paper's target (an edge midpoint of F,
-  // i.e. against an obstacle or the boundary) when no such point is reachable.
+  // nearest_clear_point), and stops early only there; in a pocket where none is reachable, the
+  // nearest at a lower level of kDropLevels, then the clearest reachable point; the paper's
+  // target (an edge midpoint of F, i.e. against an obstacle or the boundary) when none is.
   bool drop = true;
   // When the progress monitor fires during RELEASE and the carried object's centre already lies
   // in the goal region, goal_tolerance inside it, the object is released there (the predicate
@@ -208,6 +213,7 @@ struct RecoveryCounts {
   int faces = 0;           // turns toward the goal after a back-up
   int narrows = 0;         // Fix-mode entries for objects narrowing a passage the law failed
   int fragment_fixes = 0;  // Fix-mode entries for objects closing the way with unknown obstacles
+  int pocket_drops = 0;    // DISASSEMBLE drop points chosen where nothing is clear (a pocket)
 };
 
 struct ExecutiveParams {
@@ -364,6 +370,9 @@ class Executive {
     bool guide_pending = false;      // plan a guide at the next rebuild (after such a back-up)
     int retargets = 0;               // drop points chosen again after a fragment took one
     std::vector<Point> rejected_drops;
+    // The kDropLevels index the drop point was chosen at (kDropLevels.size(): the clearest
+    // point, no clearance asked); the point is kept while it still meets it.
+    std::size_t drop_level = 0;
     std::string name() const;
   };
 
@@ -399,7 +408,7 @@ class Executive {
                                       std::string reason);
   void remember_plan(Activity& a) const;
   Advance plan_disassemble(Activity& a, double radius, const Point& center, double rho);
-  std::optional<Point> drop_point(const Activity& a, const geometry::Region& free, double radius,
+  std::optional<Point> drop_point(Activity& a, const geometry::Region& free, double radius,
                                   const Point& center, double rho);
   bool step_clear(const Pose& pose, const Pose& next) const;
   struct Moving {
@@ -453,6 +462,8 @@ class Executive {
   double max_object_radius() const;
   // Robust drop rule at the pair centre xc; `slack` (m) tightens both tests.
   bool drop_clear(const Point& xc, double rho, double slack = 0) const;
+  // The drop point q still meets its level's clearance (Activity::drop_level) and region rule.
+  bool drop_kept(const Activity& a, const Point& q, double rho) const;
   double object_radius(const std::string& id) const;
   bool knowledge_changed(const Activity& a) const;
 

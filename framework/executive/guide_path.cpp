@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <queue>
+#include <span>
 #include <string>
 
 #include "core/error.h"
@@ -277,16 +278,15 @@ bool segment_clear(const Region& free, const Point& a, const Point& b, double c)
   return ok && geometry::contains(free, Point((a + b) / 2));
 }
 
-std::optional<Point> nearest_clear_point(const Region& free, const Point& from, double clearance,
-                                         const std::function<bool(const Point&)>& accept,
-                                         const GuideParams& p) {
-  validate(p);
-  if (!from.allFinite() || !std::isfinite(clearance)) {
-    throw Error("drop point: the start and the clearance must be finite");
-  }
-  const Raster g = rasterize(free, p);
+namespace {
+
+// Dijkstra over the raster's 8-neighbours from the cell of `from` (diagonals only where both
+// side cells are free): `visit(cell, cost)` in order of cost until it returns true. False when
+// `from` has no cell or the walk ends unstopped.
+template <typename Visit>
+bool walk(const Raster& g, const Region& free, const Point& from, Visit&& visit) {
   const std::optional<int> s = endpoint_cell(g, free, from);
-  if (!s) return std::nullopt;
+  if (!s) return false;
   std::vector<float> cost(g.free.size(), kInf);
   using Entry = std::pair<float, int>;
   std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open;
@@ -298,8 +298,8 @@ std::optional<Point> nearest_clear_point(const Region& free, const Point& from, 
     const auto [d, c] = open.top();
     open.pop();
     if (d > cost[c]) continue;
+    if (visit(c, d)) return true;
     const int i = c % g.nx, j = c / g.nx;
-    if (g.clear[c] >= clearance && accept(g.center(i, j))) return g.center(i, j);
     for (int k = 0; k < 8; ++k) {
       const int ni = i + kDi[k], nj = j + kDj[k];
       if (ni < 0 || nj < 0 || ni >= g.nx || nj >= g.ny) continue;
@@ -312,7 +312,57 @@ std::optional<Point> nearest_clear_point(const Region& free, const Point& from, 
       }
     }
   }
-  return std::nullopt;
+  return false;
+}
+
+void check_search(const Point& from, double clearance) {
+  if (!from.allFinite() || !std::isfinite(clearance)) {
+    throw Error("drop point: the start and the clearance must be finite");
+  }
+}
+
+}  // namespace
+
+std::optional<ClearPoint> nearest_clear_point(
+    const Region& free, const Point& from, std::span<const double> clearances,
+    const std::function<bool(const Point&, std::size_t)>& accept, const GuideParams& p) {
+  validate(p);
+  for (double c : clearances) check_search(from, c);
+  const Raster g = rasterize(free, p);
+  std::optional<ClearPoint> out;
+  std::size_t open_levels = clearances.size();  // levels that can still improve on `out`
+  walk(g, free, from, [&](int c, float) {
+    const Point q = g.center(c % g.nx, c / g.nx);
+    for (std::size_t k = 0; k < open_levels; ++k) {
+      if (g.clear[c] >= clearances[k] && accept(q, k)) {
+        out = ClearPoint{q, k};
+        open_levels = k;
+        break;
+      }
+    }
+    return open_levels == 0;
+  });
+  return out;
+}
+
+std::optional<Point> clearest_point(const Region& free, const Point& from,
+                                    const std::function<bool(const Point&)>& accept,
+                                    const GuideParams& p) {
+  validate(p);
+  check_search(from, 0.0);
+  const Raster g = rasterize(free, p);
+  std::optional<Point> out;
+  float best = -kInf;
+  walk(g, free, from, [&](int c, float) {
+    if (g.clear[c] <= best) return false;  // the walk is by cost: the first of equals wins
+    const Point q = g.center(c % g.nx, c / g.nx);
+    if (accept(q)) {
+      best = g.clear[c];
+      out = q;
+    }
+    return false;
+  });
+  return out;
 }
 
 std::optional<std::vector<Point>> guide_path(const Region& free, const Point& from, const Point& to,

@@ -18,6 +18,7 @@
 #include <cstddef>
 #include <functional>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "geometry/polygon.h"
@@ -51,12 +52,27 @@ std::optional<std::vector<geometry::Point>> guide_path(const geometry::Region& f
                                                        const geometry::Point& to,
                                                        const GuideParams& p);
 
-// The point of `free` nearest to `from` along the raster (Dijkstra over 8-neighbours) among the
-// cell centres at least `clearance` from ∂free (raster estimate, within half a cell) for which
-// `accept` holds (the caller's exact test); nullopt when none is reachable. The robust
-// variant's drop point for DISASSEMBLE (executive.h, RobustParams::drop).
-std::optional<geometry::Point> nearest_clear_point(
-    const geometry::Region& free, const geometry::Point& from, double clearance,
+// A point found by nearest_clear_point, with the index of the clearance level it meets.
+struct ClearPoint {
+  geometry::Point point;
+  std::size_t level = 0;
+};
+
+// Search over levels of clearance, `clearances` in order of preference (usually decreasing):
+// the cell centres of `free` reachable from `from` along the raster (Dijkstra over
+// 8-neighbours), and for the first level k that has one, the nearest centre at least
+// clearances[k] from ∂free (raster estimate, within half a cell) for which accept(centre, k)
+// holds (the caller's exact test); nullopt when no level has one. The robust variant's drop
+// point for DISASSEMBLE (executive.h, RobustParams::drop).
+std::optional<ClearPoint> nearest_clear_point(
+    const geometry::Region& free, const geometry::Point& from, std::span<const double> clearances,
+    const std::function<bool(const geometry::Point&, std::size_t)>& accept, const GuideParams& p);
+
+// The reachable cell centre of `free` (the walk of nearest_clear_point) farthest from ∂free
+// (raster estimate) for which `accept` holds, the nearest of equals; nullopt when none. The
+// robust drop point's fallback where no point has nearest_clear_point's clearance.
+std::optional<geometry::Point> clearest_point(
+    const geometry::Region& free, const geometry::Point& from,
     const std::function<bool(const geometry::Point&)>& accept, const GuideParams& p);
 
 // Is the closed segment [a, b] inside `free`, at distance >= c from its boundary (doubles; the

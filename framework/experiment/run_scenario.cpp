@@ -104,6 +104,7 @@ std::string metrics_json(const scenario::Scenario& s, const RunRecord& r) {
   j.key("faces").value(t.recoveries.faces);
   j.key("narrows").value(t.recoveries.narrows);
   j.key("fragment_fixes").value(t.recoveries.fragment_fixes);
+  j.key("pocket_drops").value(t.recoveries.pocket_drops);
   j.end_object();
   j.key("robot_path_length_m").value(t.robot_path_length);
   j.key("object_path_length_m").value(t.object_path_length);

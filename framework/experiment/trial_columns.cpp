@@ -92,6 +92,7 @@ void outcome_fields(const TrialRecord& r, std::vector<std::string>& f) {
   f.push_back(integer(o.recoveries.faces));
   f.push_back(integer(o.recoveries.narrows));
   f.push_back(integer(o.recoveries.fragment_fixes));
+  f.push_back(integer(o.recoveries.pocket_drops));
   f.push_back(integer(o.collisions));
   f.push_back(exact(o.min_clearance_m));
   f.push_back(integer(o.queries));
@@ -153,6 +154,7 @@ const std::vector<std::string>& trial_columns() {
                                                    "faces",
                                                    "narrows",
                                                    "fragment_fixes",
+                                                   "pocket_drops",
                                                    "collisions",
                                                    "min_clearance_m",
                                                    "queries",

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -148,6 +149,61 @@ TEST(GuidePath, SegmentClearMeasuresTheDistanceToTheBoundary) {
   EXPECT_TRUE(segment_clear(r, Point(1, 3.9), Point(9, 3.9), 0.09));
   EXPECT_FALSE(segment_clear(r, Point(1, 3.9), Point(9, 3.9), 0.11));
   EXPECT_FALSE(segment_clear(r, Point(1, 5), Point(9, 5), 0));  // through the hole
+}
+
+// Distance from q to the boundary of the rectangle [0, w] × [0, h] (q inside): the exact truth
+// for the drop-point searches below.
+double inset(const Point& q, double w, double h) {
+  return std::min({q.x(), q.y(), w - q.x(), h - q.y()});
+}
+
+// A corridor 4 m wide: no point is 3 m clear, so the search falls to the next level (1.5 m),
+// whose nearest point from (1, 1) is the corner (1.5, 1.5) of the 1.5 m inset, a walk of
+// √2 · 0.5 m; a level is preferred to any nearer point of a lower level.
+TEST(DropPoint, TheFirstLevelThatHasAPointThenTheNearest) {
+  const Region r{rect(0, 0, 10, 4), {}};
+  const GuideParams p;
+  const double cell = p.resolution;
+  const std::vector<double> levels{3.0, 1.5, 1.0};
+  const auto any = [](const Point&, std::size_t) { return true; };
+  const auto q = nearest_clear_point(r, Point(1, 1), levels, any, p);
+  ASSERT_TRUE(q.has_value());
+  EXPECT_EQ(q->level, 1u);
+  EXPECT_GE(inset(q->point, 10, 4), 1.5 - cell);
+  EXPECT_LE((q->point - Point(1.5, 1.5)).norm(), 2 * cell);
+  // accept refuses level 1 west of x = 5: level 1's nearest east of it beats level 2's points,
+  // which lie nearer.
+  const auto east = [](const Point& x, std::size_t k) { return k != 1 || x.x() >= 5; };
+  const auto e = nearest_clear_point(r, Point(1, 1), levels, east, p);
+  ASSERT_TRUE(e.has_value());
+  EXPECT_EQ(e->level, 1u);
+  EXPECT_GE(e->point.x(), 5);
+  EXPECT_LE(e->point.x(), 5 + 2 * cell);
+  EXPECT_GE(inset(e->point, 10, 4), 1.5 - cell);
+  // None refused everywhere, or a start outside the region: nullopt.
+  const auto none = [](const Point&, std::size_t) { return false; };
+  EXPECT_FALSE(nearest_clear_point(r, Point(1, 1), levels, none, p).has_value());
+  EXPECT_FALSE(nearest_clear_point(r, Point(-1, 1), levels, any, p).has_value());
+  const std::vector<double> bad{std::nan("")};
+  EXPECT_THROW(nearest_clear_point(r, Point(1, 1), bad, any, p), Error);
+}
+
+// The clearest point of the corridor is on its midline (2 m from both walls), the nearest such
+// point from (1, 1) at x = 2; with points west of x = 7 refused, at x = 7.
+TEST(DropPoint, TheClearestReachablePointTheNearestOfEquals) {
+  const Region r{rect(0, 0, 10, 4), {}};
+  const GuideParams p;
+  const double cell = p.resolution;
+  const auto q = clearest_point(
+      r, Point(1, 1), [](const Point&) { return true; }, p);
+  ASSERT_TRUE(q.has_value());
+  EXPECT_GE(inset(*q, 10, 4), 2 - cell);
+  EXPECT_LE((*q - Point(2, 2)).norm(), 2 * cell);
+  const auto e = clearest_point(
+      r, Point(1, 1), [](const Point& x) { return x.x() >= 7; }, p);
+  ASSERT_TRUE(e.has_value());
+  EXPECT_GE(inset(*e, 10, 4), 2 - cell);
+  EXPECT_LE((*e - Point(7, 2)).norm(), 2 * cell);
 }
 
 TEST(GuidePath, RejectsBadParametersAndPoints) {
