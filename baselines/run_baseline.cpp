@@ -8,6 +8,7 @@
 #include "core/rng.h"
 #include "experiment/json_writer.h"
 #include "experiment/task_from_scenario.h"
+#include "experiment/trial_columns.h"
 #include "perception/semantic_map.h"
 #include "perception/sensor.h"
 #include "sim/sim_config.h"
@@ -339,11 +340,7 @@ std::string baseline_metrics_json(const scenario::Scenario& s, const BaselineRec
   j.key("real_time_factor").value(e.wall_time > 0 ? e.sim_time / e.wall_time : 0.0);
   j.key("fix_mode_entries").value(0);
   j.key("recoveries").begin_object();  // rearm's robust variant only
-  for (const char* k : {"guides", "back_outs", "singular_switches", "convex_fallbacks", "restores",
-                        "early_releases", "withdrawals", "release_points", "early_docks", "faces",
-                        "narrows", "fragment_fixes", "pocket_drops"}) {
-    j.key(k).value(0);
-  }
+  for (const std::string& k : experiment::recovery_names()) j.key(k).value(0);
   j.end_object();
   j.key("robot_path_length_m").value(e.robot_path_length);
   j.key("object_path_length_m").value(e.object_path_length);

@@ -851,19 +851,20 @@ bool Executive::plan_guide(Activity& a, const Point& center, double t, std::stri
     path = guide_path(controller_.mapped().freespace, center, a.goal, wide);
   }
   if (!path) path = guide_path(controller_.mapped().freespace, center, a.goal, p_.guide);
-  if (path && path->size() < 2 && p_.robust.track && !a.tracking) {
-    // x* in sight (the segment to it keeps the guide's clearance in F_k), yet the law stalled:
-    // drive straight at it (RobustParams::track), the pair centre as a fully actuated point,
-    // which may back the robot in where the law of [7] would have to turn the pair around.
-    a.guide.clear();
-    a.tracking = true;
-    a.facing = Facing::kNo;
-    ++a.guides;
-    ++recoveries_.guides;
-    a.monitor.reset(t);
-    return true;
-  }
   if (!path || path->size() < 2) {
+    if (path && p_.robust.track && !a.tracking) {
+      // x* in sight (the segment to it keeps the guide's clearance in F_k), yet the law
+      // stalled: drive straight at it (RobustParams::track), the pair centre as a fully
+      // actuated point, which may back the robot in where the law of [7] would have to turn the
+      // pair around.
+      a.guide.clear();
+      a.tracking = true;
+      a.facing = Facing::kNo;
+      ++a.guides;
+      ++recoveries_.guides;
+      a.monitor.reset(t);
+      return true;
+    }
     note = path ? " (x* is in sight: no guide helps)" : " (no guide path in the known freespace)";
     return false;
   }
@@ -1225,6 +1226,18 @@ Executive::Advance Executive::plan_disassemble(Activity& a, double radius, const
   return out;
 }
 
+// As drop_clear for the first level; the lower levels keep the point while it meets their
+// clearance and the region rule (both without the slack the point was chosen with, so that the
+// target does not jump as the map grows).
+bool Executive::drop_kept(const Activity& a, const Point& q, double rho) const {
+  if (a.drop_level == 0) return drop_clear(q, rho);
+  const std::optional<std::string> carried = map_.carried();
+  if (!carried || !clear_of_regions(q, p_.robot_radius + rho, regions_)) return false;
+  if (a.drop_level >= kDropLevels.size()) return true;
+  return known_clearance(map_, q, *carried) >=
+         kDropLevels[a.drop_level] * (p_.robot_radius + max_object_radius());
+}
+
 // The robust variant's drop point: searched in the pair's mapped freespace F_k (the visible
 // unknown fragments included, as the reactive controller will see it); in F when the centre is
 // not in F_k. The nearest point clear of every region and kDropClearance (r + max ρ) from
@@ -1232,21 +1245,6 @@ Executive::Advance Executive::plan_disassemble(Activity& a, double radius, const
 // kDropLevels that has one, then the clearest reachable point. Nearest, not clearest: the
 // farther a point, the likelier an unseen fragment takes it (measured: clearest-first chose
 // points 2–3 m away in unexplored space, eight of them taken in turn).
-// As drop_clear for the first level; the lower levels keep the point while it meets their
-// clearance and the region rule (both without the slack the point was chosen with, so that the
-// target does not jump as the map grows).
-bool Executive::drop_kept(const Activity& a, const Point& q, double rho) const {
-  if (a.drop_level == 0) return drop_clear(q, rho);
-  const std::optional<std::string> carried = map_.carried();
-  if (!carried) return false;
-  for (const RegionOfInterest& reg : regions_) {
-    if (geometry::distance(reg.polygon, q) <= p_.robot_radius + rho) return false;
-  }
-  if (a.drop_level >= kDropLevels.size()) return true;
-  return known_clearance(map_, q, *carried) >=
-         kDropLevels[a.drop_level] * (p_.robot_radius + max_object_radius());
-}
-
 std::optional<Point> Executive::drop_point(Activity& a, const geometry::Region& free, double radius,
                                            const Point& center, double rho) {
   const double unit = p_.robot_radius + max_object_radius();
@@ -1257,36 +1255,29 @@ std::optional<Point> Executive::drop_point(Activity& a, const geometry::Region& 
         reactive::build_mapped_space(semantic_input(), radius, center, drop_dilations_).freespace;
   } catch (const reactive::NotInFreespace&) {
   }
+  // Exact clearance of each level from everything known; the raster measures from ∂F_k, which
+  // lies the pair radius closer.
+  std::array<double, kDropLevels.size()> need{};
+  std::array<double, kDropLevels.size()> raster_need{};
+  for (std::size_t k = 0; k < need.size(); ++k) {
+    need[k] = kDropLevels[k] * unit + kDropSlack;
+    raster_need[k] = need[k] - radius;
+  }
   // Points near a drop point a fragment took before are skipped: fragments are what the sensor
   // sees now, so a point can look clear from one side and not from another.
-  const double avoid = 2 * unit;
-  const double pair = p_.robot_radius + rho + kDropSlack;
-  auto fresh = [&](const Point& q) {
-    for (const Point& x : a.rejected_drops) {
-      if ((q - x).norm() < avoid) return false;
-    }
-    for (const RegionOfInterest& reg : regions_) {
-      if (geometry::distance(reg.polygon, q) <= pair) return false;
-    }
-    return true;
-  };
-  std::array<double, kDropLevels.size()> need{};  // from ∂F_k, i.e. minus the pair radius
-  for (std::size_t k = 0; k < need.size(); ++k) need[k] = kDropLevels[k] * unit + kDropSlack;
-  std::array<double, kDropLevels.size()> raster_need{};
-  for (std::size_t k = 0; k < need.size(); ++k) raster_need[k] = need[k] - radius;
   const std::string carried = map_.carried().value_or("");
   auto accept = [&](const Point& q, std::size_t k) {
-    return fresh(q) && known_clearance(map_, q, carried) >= need[k];
+    for (const Point& x : a.rejected_drops) {
+      if ((q - x).norm() < 2 * unit) return false;
+    }
+    return clear_of_regions(q, p_.robot_radius + rho + kDropSlack, regions_) &&
+           (k == need.size() || known_clearance(map_, q, carried) >= need[k]);
   };
-  if (auto q = nearest_clear_point(where, center, raster_need, accept, p_.guide)) {
-    a.drop_level = q->level;
-    if (q->level > 0) ++recoveries_.pocket_drops;
-    return q->point;
-  }
-  auto q = clearest_point(where, center, fresh, p_.guide);
-  a.drop_level = kDropLevels.size();
-  if (q) ++recoveries_.pocket_drops;
-  return q;
+  const auto q = nearest_clear_point(where, center, raster_need, accept, p_.guide, true);
+  a.drop_level = q ? q->level : kDropLevels.size();  // none: the paper's target, kept as is
+  if (!q) return std::nullopt;
+  if (q->level > 0) ++recoveries_.pocket_drops;
+  return q->point;
 }
 
 Executive::Advance Executive::plan_grasp(Activity& a, const Pose& pose) {

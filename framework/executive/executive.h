@@ -216,6 +216,26 @@ struct RecoveryCounts {
   int pocket_drops = 0;    // DISASSEMBLE drop points chosen where nothing is clear (a pocket)
 };
 
+// Each count's name in metrics.json and trials.csv, in column order.
+struct RecoveryField {
+  const char* name;
+  int RecoveryCounts::*count;
+};
+inline constexpr RecoveryField kRecoveryFields[] = {
+    {"guides", &RecoveryCounts::guides},
+    {"back_outs", &RecoveryCounts::back_outs},
+    {"singular_switches", &RecoveryCounts::singular},
+    {"convex_fallbacks", &RecoveryCounts::fallbacks},
+    {"restores", &RecoveryCounts::restores},
+    {"early_releases", &RecoveryCounts::early_releases},
+    {"withdrawals", &RecoveryCounts::withdrawals},
+    {"release_points", &RecoveryCounts::release_points},
+    {"early_docks", &RecoveryCounts::early_docks},
+    {"faces", &RecoveryCounts::faces},
+    {"narrows", &RecoveryCounts::narrows},
+    {"fragment_fixes", &RecoveryCounts::fragment_fixes},
+    {"pocket_drops", &RecoveryCounts::pocket_drops}};
+
 struct ExecutiveParams {
   double robot_radius = 0.2;  // r (m)
   reactive::DiffeoParams diffeo;

@@ -325,22 +325,31 @@ void check_search(const Point& from, double clearance) {
 
 std::optional<ClearPoint> nearest_clear_point(
     const Region& free, const Point& from, std::span<const double> clearances,
-    const std::function<bool(const Point&, std::size_t)>& accept, const GuideParams& p) {
+    const std::function<bool(const Point&, std::size_t)>& accept, const GuideParams& p,
+    bool clearest_last) {
   validate(p);
+  check_search(from, 0.0);
   for (double c : clearances) check_search(from, c);
   const Raster g = rasterize(free, p);
+  const std::size_t last = clearances.size();  // the clearest-point level
   std::optional<ClearPoint> out;
-  std::size_t open_levels = clearances.size();  // levels that can still improve on `out`
+  std::size_t open_levels = last;  // levels that can still improve on `out`
+  float best = -kInf;              // the clearest accepted cell so far (clearest_last)
   walk(g, free, from, [&](int c, float) {
     const Point q = g.center(c % g.nx, c / g.nx);
     for (std::size_t k = 0; k < open_levels; ++k) {
       if (g.clear[c] >= clearances[k] && accept(q, k)) {
         out = ClearPoint{q, k};
         open_levels = k;
-        break;
+        return open_levels == 0;
       }
     }
-    return open_levels == 0;
+    // The walk is by cost: the first of equally clear cells is the nearest.
+    if (clearest_last && open_levels == last && g.clear[c] > best && accept(q, last)) {
+      best = g.clear[c];
+      out = ClearPoint{q, last};
+    }
+    return false;
   });
   return out;
 }
@@ -348,21 +357,10 @@ std::optional<ClearPoint> nearest_clear_point(
 std::optional<Point> clearest_point(const Region& free, const Point& from,
                                     const std::function<bool(const Point&)>& accept,
                                     const GuideParams& p) {
-  validate(p);
-  check_search(from, 0.0);
-  const Raster g = rasterize(free, p);
-  std::optional<Point> out;
-  float best = -kInf;
-  walk(g, free, from, [&](int c, float) {
-    if (g.clear[c] <= best) return false;  // the walk is by cost: the first of equals wins
-    const Point q = g.center(c % g.nx, c / g.nx);
-    if (accept(q)) {
-      best = g.clear[c];
-      out = q;
-    }
-    return false;
-  });
-  return out;
+  const auto q = nearest_clear_point(
+      free, from, {}, [&](const Point& x, std::size_t) { return accept(x); }, p, true);
+  if (!q) return std::nullopt;
+  return q->point;
 }
 
 std::optional<std::vector<Point>> guide_path(const Region& free, const Point& from, const Point& to,

@@ -62,15 +62,17 @@ struct ClearPoint {
 // the cell centres of `free` reachable from `from` along the raster (Dijkstra over
 // 8-neighbours), and for the first level k that has one, the nearest centre at least
 // clearances[k] from ∂free (raster estimate, within half a cell) for which accept(centre, k)
-// holds (the caller's exact test); nullopt when no level has one. The robust variant's drop
-// point for DISASSEMBLE (executive.h, RobustParams::drop).
+// holds (the caller's exact test). When no level has one and `clearest_last`, the reachable
+// centre farthest from ∂free for which accept(centre, clearances.size()) holds, the nearest of
+// equals, at level clearances.size(); else nullopt. One raster, one walk. The robust variant's
+// drop point for DISASSEMBLE (executive.h, RobustParams::drop).
 std::optional<ClearPoint> nearest_clear_point(
     const geometry::Region& free, const geometry::Point& from, std::span<const double> clearances,
-    const std::function<bool(const geometry::Point&, std::size_t)>& accept, const GuideParams& p);
+    const std::function<bool(const geometry::Point&, std::size_t)>& accept, const GuideParams& p,
+    bool clearest_last = false);
 
-// The reachable cell centre of `free` (the walk of nearest_clear_point) farthest from ∂free
-// (raster estimate) for which `accept` holds, the nearest of equals; nullopt when none. The
-// robust drop point's fallback where no point has nearest_clear_point's clearance.
+// nearest_clear_point's last level alone: the reachable centre farthest from ∂free for which
+// `accept` holds, the nearest of equals; nullopt when none.
 std::optional<geometry::Point> clearest_point(
     const geometry::Region& free, const geometry::Point& from,
     const std::function<bool(const geometry::Point&)>& accept, const GuideParams& p);

@@ -215,12 +215,18 @@ std::optional<Point> release_point(const geometry::Region& freespace,
   return best;
 }
 
+bool clear_of_regions(const Point& xc, double radius,
+                      const std::vector<RegionOfInterest>& regions) {
+  for (const RegionOfInterest& reg : regions) {
+    if (geometry::distance(reg.polygon, xc) <= radius) return false;
+  }
+  return true;
+}
+
 bool disassembly_done(const Point& xc, double pair_radius, double r,
                       const perception::SemanticMap& map, std::string_view carried,
                       const std::vector<RegionOfInterest>& regions) {
-  for (const RegionOfInterest& reg : regions) {
-    if (geometry::distance(reg.polygon, xc) <= pair_radius) return false;
-  }
+  if (!clear_of_regions(xc, pair_radius, regions)) return false;
   double max_rho = 0;
   for (const auto& m : map.ground_truth().movable) max_rho = std::max(max_rho, m.disk.radius);
   return known_clearance(map, xc, carried) >= 2 * (r + max_rho);

@@ -94,6 +94,9 @@ std::optional<Point> release_point(const geometry::Region& freespace,
                                    const perception::SemanticMap& map, std::string_view carried,
                                    double inset, double enough, double step);
 
+// The disk (centre xc, radius `radius`) meets no region of interest.
+bool clear_of_regions(const Point& xc, double radius, const std::vector<RegionOfInterest>& regions);
+
 // Early stop of DISASSEMBLE (paper §V-B): the pair disk (centre xc, radius pair_radius)
 // intersects no region of interest, and xc is at least 2(r + max_k ρ_k) from every other
 // object. rearm reads the paper's "all other objects in the workspace" as every obstacle the

@@ -92,19 +92,9 @@ std::string metrics_json(const scenario::Scenario& s, const RunRecord& r) {
   j.key("real_time_factor").value(r.real_time_factor());
   j.key("fix_mode_entries").value(t.fix_mode_entries);
   j.key("recoveries").begin_object();
-  j.key("guides").value(t.recoveries.guides);
-  j.key("back_outs").value(t.recoveries.back_outs);
-  j.key("singular_switches").value(t.recoveries.singular);
-  j.key("convex_fallbacks").value(t.recoveries.fallbacks);
-  j.key("restores").value(t.recoveries.restores);
-  j.key("early_releases").value(t.recoveries.early_releases);
-  j.key("withdrawals").value(t.recoveries.withdrawals);
-  j.key("release_points").value(t.recoveries.release_points);
-  j.key("early_docks").value(t.recoveries.early_docks);
-  j.key("faces").value(t.recoveries.faces);
-  j.key("narrows").value(t.recoveries.narrows);
-  j.key("fragment_fixes").value(t.recoveries.fragment_fixes);
-  j.key("pocket_drops").value(t.recoveries.pocket_drops);
+  for (const executive::RecoveryField& f : executive::kRecoveryFields) {
+    j.key(f.name).value(t.recoveries.*f.count);
+  }
   j.end_object();
   j.key("robot_path_length_m").value(t.robot_path_length);
   j.key("object_path_length_m").value(t.object_path_length);

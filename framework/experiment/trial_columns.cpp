@@ -80,19 +80,9 @@ void outcome_fields(const TrialRecord& r, std::vector<std::string>& f) {
   f.push_back(integer(o.actions));
   f.push_back(integer(o.fix_mode_entries));
   f.push_back(integer(o.replans));
-  f.push_back(integer(o.recoveries.guides));
-  f.push_back(integer(o.recoveries.back_outs));
-  f.push_back(integer(o.recoveries.singular));
-  f.push_back(integer(o.recoveries.fallbacks));
-  f.push_back(integer(o.recoveries.restores));
-  f.push_back(integer(o.recoveries.early_releases));
-  f.push_back(integer(o.recoveries.withdrawals));
-  f.push_back(integer(o.recoveries.release_points));
-  f.push_back(integer(o.recoveries.early_docks));
-  f.push_back(integer(o.recoveries.faces));
-  f.push_back(integer(o.recoveries.narrows));
-  f.push_back(integer(o.recoveries.fragment_fixes));
-  f.push_back(integer(o.recoveries.pocket_drops));
+  for (const executive::RecoveryField& k : executive::kRecoveryFields) {
+    f.push_back(integer(o.recoveries.*k.count));
+  }
   f.push_back(integer(o.collisions));
   f.push_back(exact(o.min_clearance_m));
   f.push_back(integer(o.queries));
@@ -101,6 +91,12 @@ void outcome_fields(const TrialRecord& r, std::vector<std::string>& f) {
 }
 
 }  // namespace
+
+std::vector<std::string> recovery_names() {
+  std::vector<std::string> out;
+  for (const executive::RecoveryField& f : executive::kRecoveryFields) out.emplace_back(f.name);
+  return out;
+}
 
 const std::vector<std::string>& trial_columns() {
   static const std::vector<std::string> columns = {"trial",

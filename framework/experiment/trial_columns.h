@@ -20,6 +20,10 @@ std::string trial_header();  // the CSV header line, without the newline
 std::vector<std::string> trial_fields(const TrialRecord& r);
 std::string trial_row(const TrialRecord& r);
 
+// The names of rearm's recovery counts (executive::kRecoveryFields), in column order; also the
+// keys of metrics.json's "recoveries".
+std::vector<std::string> recovery_names();
+
 // Columns that differ between runs of the same trial: wall-clock times, CPU time, host,
 // CPU model and revision.
 bool is_timing_column(const std::string& name);
