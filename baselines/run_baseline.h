@@ -1,4 +1,4 @@
-// One baseline trial on a scenario (issue 7; docs/experiments.md, "Baseline"): plan with B1
+// One baseline trial on a scenario (docs/experiments.md, "Baseline"): plan with B1
 // (mRS), B2 (BiRRT over arrangements) or the replanning variant, check the plan with the
 // independent validator, execute it in the same Box2D world as rearm's runs, and write the same
 // metrics as `rearm run` plus planning_time_s, subqueries and nodes.

@@ -1,4 +1,4 @@
-// rearm baseline SCENARIO.yaml: one trial of an OMPL rearrangement baseline (issue 7): plan
+// rearm baseline SCENARIO.yaml: one trial of an OMPL rearrangement baseline: plan
 // (mRS, BiRRT over arrangements, or the replanning variant), validate, execute in Box2D, write
 // metrics.json (the keys of `rearm run` plus planning_time_s, subqueries, nodes), the
 // trajectory, the figure and the animation.

@@ -1,4 +1,4 @@
-// rearm run SCENARIO.yaml: one run of a scenario in the Box2D world (issue 6), with its metrics,
+// rearm run SCENARIO.yaml: one run of a scenario in the Box2D world, with its metrics,
 // figure and animation.
 #include <cstdio>
 #include <cstdlib>

@@ -1,4 +1,4 @@
-// One run of a scenario (issue 6; docs/architecture.md "A control tick"): the executive's task
+// One run of a scenario (docs/architecture.md "A control tick"): the executive's task
 // loop (executive/task_runner.h) on the Box2D world of sim/ (or on the kinematic plant, for
 // comparison), and the files a run leaves: metrics.json and the trajectory that the figure and
 // the animation are drawn from.

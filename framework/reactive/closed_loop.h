@@ -1,7 +1,7 @@
 // The kinematic closed loop (docs/reactive.md §6): a fixed-step integrator (default 0.01 s, the
 // reference's ode45 MaxStep) of the robot under the reactive controller, with the map update
 // between steps and the controller rebuilt only when the map changed. Independent of Box2D:
-// the same loop runs in tests and benchmarks, and (issue 5) under the executive.
+// the same loop runs in tests and benchmarks, and under the executive.
 #pragma once
 
 #include <functional>

@@ -64,7 +64,7 @@ constexpr double kMinHullEdge = 0.05;
 // law stops on the edge that squarely faces the goal when it first touches that edge, which
 // happens for a share of head-on approaches of about one edge's width over the obstacle's; 48
 // sides (the reactive closed-loop tests' round obstacles) measured 59/60 random-goal instances
-// completed against 55/60 with 24 (issue 7's comparison, N = 1..6). With semi-axes >=
+// completed against 55/60 with 24 (the baseline comparison, N = 1..6). With semi-axes >=
 // kMinObstacleSide / 2 every edge is >= 0.2 · 2 sin(π/48) = 0.026 m, five times Box2D's linear
 // slop. Aspect ratio at most kMaxEllipseAspect keeps the curvature radius at the ends of the
 // minor axis, a²/b, within 3.4 times the semi-major axis.
@@ -101,7 +101,7 @@ constexpr double kObstacleObjectGap = 0.02;  // m: obstacle to blocker disk
 constexpr double kMinNewShare = 0.25;
 
 // Raster of the pair freespace (pair_raster.h).
-constexpr double kRasterCell = 0.05;           // m
+constexpr double kRasterCell = 0.05;  // m
 constexpr std::size_t kMaxRasterCells = 250'000;
 
 // Sealed pocket (random_instance.h, "Sealed pocket").
@@ -175,15 +175,15 @@ Point workspace_size(const InstanceSpec& spec) {
 // Lengths derived from the spec (random_instance.h, "Clearances").
 struct Layout {
   double width = 0, height = 0;
-  double passage = 0;          // w
-  double pair = 0;             // R of solvability.h
-  double grasp = 0;            // cg
-  double point_obstacle = 0;   // max(cg, s/√2 + slack)
-  double point_boundary = 0;   // cb
-  double region_side = 0;      // s
-  double spacing = 0;          // d
-  bool dense = false;          // Chebyshev spacing
-  double robot_object = 0;     // robot start to object start (centres)
+  double passage = 0;         // w
+  double pair = 0;            // R of solvability.h
+  double grasp = 0;           // cg
+  double point_obstacle = 0;  // max(cg, s/√2 + slack)
+  double point_boundary = 0;  // cb
+  double region_side = 0;     // s
+  double spacing = 0;         // d
+  bool dense = false;         // Chebyshev spacing
+  double robot_object = 0;    // robot start to object start (centres)
 };
 
 double sparse_spacing(const InstanceSpec& spec, double w) {
@@ -225,9 +225,8 @@ void check_workspace(const InstanceSpec& spec) {
   const char* wfield = spec.footprint_density > 0 ? "footprint_density" : "width";
   const char* hfield = spec.footprint_density > 0 ? "footprint_density" : "height";
   if (spec.footprint_density > 0 && !(l.width >= kMinLength && l.width <= kMaxWorkspaceSide)) {
-    bad_field("footprint_density", "gives a workspace side of " + num(l.width) +
-                                       " m, outside [" + num(kMinLength) + ", " +
-                                       num(kMaxWorkspaceSide) + "] m");
+    bad_field("footprint_density", "gives a workspace side of " + num(l.width) + " m, outside [" +
+                                       num(kMinLength) + ", " + num(kMaxWorkspaceSide) + "] m");
   }
   auto wide_enough = [&](double side, const char* field) {
     if (!(side > 2 * l.point_boundary)) {
@@ -258,8 +257,8 @@ void check_spec(const InstanceSpec& spec) {
   check_length(spec.sensor_range, "sensor_range");
   check_length(spec.max_obstacle_side, "max_obstacle_side", kMaxMaxObstacleSide);
   if (spec.max_obstacle_side < kMinMaxObstacleSide) {
-    bad_field("max_obstacle_side", "must be >= " + num(kMinMaxObstacleSide) + " m, got " +
-                                       num(spec.max_obstacle_side));
+    bad_field("max_obstacle_side",
+              "must be >= " + num(kMinMaxObstacleSide) + " m, got " + num(spec.max_obstacle_side));
   }
   if (!(std::isfinite(spec.passage_margin) && spec.passage_margin >= kMinPassageMargin &&
         spec.passage_margin <= kMaxPassageMargin)) {
@@ -331,9 +330,7 @@ bool closer_than(const Polygon& p, const Polygon& q, double w) {
   if (geometry::contains(q, p.vertices.front()) || geometry::contains(p, q.vertices.front())) {
     return true;
   }
-  auto edge_box = [](const Point& a, const Point& b) {
-    return Box{a.cwiseMin(b), a.cwiseMax(b)};
-  };
+  auto edge_box = [](const Point& a, const Point& b) { return Box{a.cwiseMin(b), a.cwiseMax(b)}; };
   const Box qbox = bounding_box(q);
   for (std::size_t i = 0, n = p.size(); i < n; ++i) {
     const Point& a = p.vertices[i];
@@ -452,8 +449,8 @@ struct PocketFrame {
   Polygon walls() const {
     return Polygon{{Point(-a - t, -t), Point(a + t, -t), Point(a + t, 2 * a + t),
                     Point(m / 2, 2 * a + t), Point(m / 2, 2 * a), Point(a, 2 * a), Point(a, 0),
-                    Point(-a, 0), Point(-a, 2 * a), Point(-m / 2, 2 * a),
-                    Point(-m / 2, 2 * a + t), Point(-a - t, 2 * a + t)}};
+                    Point(-a, 0), Point(-a, 2 * a), Point(-m / 2, 2 * a), Point(-m / 2, 2 * a + t),
+                    Point(-a - t, 2 * a + t)}};
   }
   Point goal() const { return Point(0, a); }
   Point blocker() const { return Point(0, 2 * a + t); }
@@ -493,10 +490,9 @@ double wall_gap(const Polygon& p, double width, double height) {
 
 // The candidate's relation to the walls: every wall either touched (gap 0) or >= w away.
 bool boundary_rule(const Polygon& p, double width, double height, double w) {
-  double gaps[4] = {std::numeric_limits<double>::infinity(),
-                    std::numeric_limits<double>::infinity(),
-                    std::numeric_limits<double>::infinity(),
-                    std::numeric_limits<double>::infinity()};
+  double gaps[4] = {
+      std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
+      std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
   for (const Point& v : p.vertices) {
     if (v.x() < 0 || v.x() > width || v.y() < 0 || v.y() > height) return false;
     gaps[0] = std::min(gaps[0], v.x());
@@ -590,7 +586,8 @@ class Generator {
     return !in_box && (p - pocket_->blocker).norm() >= pocket_->keepout;
   }
 
-  bool point_ok(const Point& p, const std::vector<Point>& out, const std::vector<Point>& also) const {
+  bool point_ok(const Point& p, const std::vector<Point>& out,
+                const std::vector<Point>& also) const {
     return spaced_from(p, out) && spaced_from(p, also) && clear_of_pocket(p, l_.point_obstacle);
   }
 
@@ -639,8 +636,8 @@ class Generator {
       }
       placement_failed(what + " " + std::to_string(first_index + i),
                        "points keep a spacing >= " + num(l_.spacing) +
-                           (l_.dense ? " m (Chebyshev)" : " m") + " and >= " +
-                           num(l_.point_boundary) + " m from the boundary");
+                           (l_.dense ? " m (Chebyshev)" : " m") +
+                           " and >= " + num(l_.point_boundary) + " m from the boundary");
     }
   }
 
@@ -704,8 +701,8 @@ class Generator {
     PocketFrame f;
     f.t = kWallThickness;
     f.m = std::max(l_.passage, 2 * (l_.pair + raster_.margin()) + 2 * raster_.cell_side());
-    f.a = std::max({l_.grasp, l_.region_side / std::numbers::sqrt2 + kPlacementSlack,
-                    f.m / 2 + kMinStub});
+    f.a = std::max(
+        {l_.grasp, l_.region_side / std::numbers::sqrt2 + kPlacementSlack, f.m / 2 + kMinStub});
     return f;
   }
 
@@ -737,8 +734,8 @@ class Generator {
       pocket_ = k;
       return;
     }
-    placement_failed("the sealed pocket", "its walls keep >= " + num(l_.passage) +
-                                              " m from the boundary");
+    placement_failed("the sealed pocket",
+                     "its walls keep >= " + num(l_.passage) + " m from the boundary");
   }
 
   // Raster targets (random_instance.h, "Solvability"): the grasp positions of every start,
@@ -758,8 +755,8 @@ class Generator {
     for (const Point& p : goals_) targets_.push_back(grasp_cells(p));
     targets_.push_back(grasp_cells(parking_));
     if (pocket_) {
-      targets_.push_back({raster_.cell_of(pocket_->blocker + (spec_.robot_radius + kGripOffset) *
-                                                                 pocket_->outward)});
+      targets_.push_back({raster_.cell_of(pocket_->blocker +
+                                          (spec_.robot_radius + kGripOffset) * pocket_->outward)});
     }
     source_ = raster_.cell_of(robot_start_);
   }
@@ -836,11 +833,10 @@ class Generator {
     const Pose pose{inset_point(rng, 0), std::cos(angle), std::sin(angle)};
     if (o.polygon.size() < 3) return o;
     o.polygon = pose.apply(o.polygon);
-    const bool crosses = std::any_of(o.polygon.vertices.begin(), o.polygon.vertices.end(),
-                                     [&](const Point& v) {
-                                       return v.x() < 0 || v.x() > l_.width || v.y() < 0 ||
-                                              v.y() > l_.height;
-                                     });
+    const bool crosses =
+        std::any_of(o.polygon.vertices.begin(), o.polygon.vertices.end(), [&](const Point& v) {
+          return v.x() < 0 || v.x() > l_.width || v.y() < 0 || v.y() > l_.height;
+        });
     if (crosses && !unknown && o.polygon.size() == 4) {  // a familiar rectangle
       o.polygon = clip_to_workspace(o.polygon, l_.width, l_.height);
     }
@@ -851,8 +847,10 @@ class Generator {
   void translate(Obstacle& o, const Point& v) const {
     for (Point& x : o.polygon.vertices) {
       x += v;
-      for (const auto& [c, wall] : {std::pair<double*, double>{&x.x(), 0.0}, {&x.x(), l_.width},
-                                    {&x.y(), 0.0}, {&x.y(), l_.height}}) {
+      for (const auto& [c, wall] : {std::pair<double*, double>{&x.x(), 0.0},
+                                    {&x.x(), l_.width},
+                                    {&x.y(), 0.0},
+                                    {&x.y(), l_.height}}) {
         if (std::abs(*c - wall) <= kWallSnap) *c = wall;
       }
     }
@@ -931,8 +929,8 @@ class Generator {
       Obstacle o = sample_obstacle(rng, unknown);
       snap(o);
       if (!acceptable(o)) continue;
-      const double fresh = static_cast<double>(coverage_.fresh(o.polygon, false)) *
-                           coverage_.cell_area();
+      const double fresh =
+          static_cast<double>(coverage_.fresh(o.polygon, false)) * coverage_.cell_area();
       if (fresh >= kMinNewShare * o.polygon.area()) found.emplace_back(fresh, std::move(o));
     }
     std::stable_sort(found.begin(), found.end(),

@@ -37,7 +37,7 @@
 //     reason says so); when C holds no object at all, x* is a rounding hair outside F and the
 //     verdict is kReachable.
 //
-// Speed (issue 5: ≤ 1 ms at 10 objects and 20 familiar obstacles). CGAL's exact overlays cost
+// Speed (target: ≤ 1 ms at 10 objects and 20 familiar obstacles). CGAL's exact overlays cost
 // about 1 µs per input edge, so one global overlay of the bound, the obstacles and the objects
 // (~550 edges) took 2 ms. They are now kept to where shapes interact (topology/freespace.h):
 // bound − ∪fixed is computed once and kept exact (TopologyCache, below); per call an object

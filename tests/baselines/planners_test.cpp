@@ -1,4 +1,4 @@
-// B1 (mRS) and B2 (BiRRT over arrangements) on issue 7's acceptance instances: a monotone
+// B1 (mRS) and B2 (BiRRT over arrangements) on hand-built instances with known answers: a monotone
 // instance solved by both; the paper's Fig. 5 cyclic instance proven non-monotone for B1 (by
 // exact geometry, before any motion query) and solved by B2; determinism per seed, also with
 // four trials in parallel threads; the time limit. Every plan is checked by the independent

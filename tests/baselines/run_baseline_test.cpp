@@ -1,4 +1,4 @@
-// Baseline trials end to end (issue 7, acceptance 1): plans executed in the same Box2D world as
+// Baseline trials end to end: plans executed in the same Box2D world as
 // rearm's runs, with the outcome judged on the simulator's final object positions against the
 // scenario file's region polygons (exact point location), not on the planner's own account.
 #include "baselines/run_baseline.h"

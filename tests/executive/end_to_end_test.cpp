@@ -1,4 +1,4 @@
-// Kinematic end-to-end tasks (issue 5, acceptance 3): whole LTL tasks run through the mission
+// Kinematic end-to-end tasks: whole LTL tasks run through the mission
 // controller, the interface layer with its Fix mode, the topology check and the reactive
 // controller on the kinematic plant (no Box2D). The checks are against the ground truth the
 // plant keeps, not against the executive's own view: where the robot and the objects end up

@@ -1,4 +1,4 @@
-// Runs of the committed scenario files (issue 6): the Box2D world and the kinematic plant give
+// Runs of the committed scenario files: the Box2D world and the kinematic plant give
 // the same action sequence for Fig. 3; a run repeated gives byte-identical metrics apart from
 // the timing fields; the task's names are checked against the scenario with the key named.
 #include "experiment/run_scenario.h"

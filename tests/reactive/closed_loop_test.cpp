@@ -1,5 +1,5 @@
-// Closed loop of the reactive controller in static scenes of [7]'s kind (issue 4, acceptance 2;
-// docs/reactive.md §5): familiar non-convex obstacles localized whole within the sensor range,
+// Closed loop of the reactive controller in static scenes of [7]'s kind
+// (docs/reactive.md §5): familiar non-convex obstacles localized whole within the sensor range,
 // unknown convex ones seen as fragments, the map updated between steps and the controller
 // rebuilt on change. Truth: clearance against the ground-truth geometry, the goal distance.
 #include "reactive/closed_loop.h"

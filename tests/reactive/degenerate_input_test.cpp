@@ -1,4 +1,4 @@
-// Degenerate input to the reactive layer (issue 4, acceptance 3; docs/reactive.md §5): each
+// Degenerate input to the reactive layer (docs/reactive.md §5): each
 // case gives a clear error or the documented fallback, never NaN.
 #include <gtest/gtest.h>
 

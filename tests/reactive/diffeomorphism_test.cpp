@@ -30,7 +30,7 @@ using test_support::to_semantic_input;
 // 10³ m⁻¹, no single fixed step is both above round-off and below truncation error.
 constexpr double kFdFirstStep = 1e-3;
 constexpr int kFdSteps = 12;
-// Acceptance 1 of issue 4: max relative error of Dh and D²h against differences.
+// Max relative error of Dh and D²h against differences.
 constexpr double kMaxRelativeError = 1e-5;
 
 struct Built {

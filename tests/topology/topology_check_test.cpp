@@ -1,4 +1,4 @@
-// Hand-built scenes with known answers for the topology check (issue 5, acceptance 1; paper
+// Hand-built scenes with known answers for the topology check (paper
 // Appendix III and Fig. 3): one object blocking the only corridor, a chain of two touching
 // objects in a door, a walled-in target, a target reachable around objects; the same for the
 // robot–object pair (larger radius), and bad input.

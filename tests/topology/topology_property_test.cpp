@@ -1,4 +1,4 @@
-// Property test of the topology check against independent truth (issue 5, acceptance 2):
+// Property test of the topology check against independent truth:
 // seeded random scenes in a 10 × 10 m room (walls with doors, rectangles and star polygons,
 // disk objects, a random radius standing for the robot or a robot–object pair); the verdict
 // must agree with a 4-connected flood fill on a 400 × 400 raster of the same dilated
