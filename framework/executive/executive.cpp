@@ -634,7 +634,7 @@ Executive::Advance Executive::rebuild(Activity& a, double radius, const Point& c
   // A guide in use stays while its next waypoint is still free (a path costs tens of ms; the
   // map changes every few ticks as fragments grow), else it is planned again.
   if (!a.guide.empty() && !reactive::in_freespace(controller_.mapped(), a.guide.front())) {
-    const auto path = guide_path(controller_.mapped().freespace, center, a.goal, p_.guide);
+    const auto path = guide_to(a, center, p_.guide);
     a.guide = path ? std::vector<Point>(path->begin(), path->end() - 1) : std::vector<Point>{};
   }
   return out;
@@ -743,34 +743,50 @@ std::optional<Executive::Advance> Executive::narrow(Activity& a, const Pose& pos
   if (!p_.robust.narrow || a.narrowed || !a.target) return std::nullopt;
   a.narrowed = true;
   const auto [rho, radius, center] = moving(a, pose);
+  const std::optional<Narrowing> n =
+      grown_blockers(map_.familiar(), true, radius, center, *a.target);
+  if (!n) return std::nullopt;
+  std::optional<Advance> out =
+      fix_mode_for(a, n->blocking,
+                   "objects narrow the passage to x* below what the law got through (grown by " +
+                       fmt(n->slack) + " m): " + n->reason);
+  if (out) ++recoveries_.narrows;
+  return out;
+}
+
+// The topology check with `fixed` as the fixed obstacles (the topology cache only for the
+// familiar ones) and every movable object grown by kNarrowSlacks in turn: the first slack whose
+// verdict names objects, or whose grown objects cover the centre (then those whose grown
+// dilation contains it); nullopt when fixed obstacles separate x* or no slack names any.
+std::optional<Executive::Narrowing> Executive::grown_blockers(
+    const std::vector<geometry::Polygon>& fixed, bool familiar_only, double radius,
+    const Point& center, const Point& target) {
   for (double slack : kNarrowSlacks) {
     std::vector<geometry::Disk> grown = map_.movable();
     for (geometry::Disk& d : grown) d.radius += slack;
-    topology::TopologyResult res;
-    std::vector<std::size_t> blocking;
+    Narrowing n{{}, "", slack};
     try {
       const ScopedStopwatch sw(times_.topology_s);
-      res = topology::check_topology(
-          topology::make_input(map_.workspace(), map_.familiar(), grown, radius, center, *a.target,
-                               std::nullopt, topology_cache_),
-          topology_cache_);
+      const topology::TopologyResult res =
+          familiar_only ? topology::check_topology(
+                              topology::make_input(map_.workspace(), fixed, grown, radius, center,
+                                                   target, std::nullopt, topology_cache_),
+                              topology_cache_)
+                        : topology::check_topology(topology::make_input(
+                              map_.workspace(), fixed, grown, radius, center, target));
       ++topology_checks_;
       if (res.verdict == topology::Verdict::kBlockedByFixed) return std::nullopt;
       if (res.verdict != topology::Verdict::kBlockedByObjects) continue;
-      blocking = res.blocking;
+      n.blocking = res.blocking;
+      n.reason = res.reason;
     } catch (const topology::CenterNotFree&) {
       // Grown objects cover the centre: those within `slack` of the robot's dilation squeeze it.
       for (std::size_t i = 0; i < grown.size(); ++i) {
-        if ((grown[i].center - center).norm() < grown[i].radius + radius) blocking.push_back(i);
+        if ((grown[i].center - center).norm() < grown[i].radius + radius) n.blocking.push_back(i);
       }
-      res.reason = "the robot's centre lies within " + fmt(slack) + " m of their dilations";
+      n.reason = "the robot's centre lies within " + fmt(slack) + " m of their dilations";
     }
-    std::optional<Advance> out =
-        fix_mode_for(a, blocking,
-                     "objects narrow the passage to x* below what the law got through (grown by " +
-                         fmt(slack) + " m): " + res.reason);
-    if (out) ++recoveries_.narrows;
-    return out;
+    return n;
   }
   return std::nullopt;
 }
@@ -815,10 +831,22 @@ std::optional<Executive::Advance> Executive::fragment_blockers(Activity& a, doub
   } catch (const topology::CenterNotFree&) {
     return std::nullopt;
   }
-  if (res.verdict != topology::Verdict::kBlockedByObjects) return std::nullopt;
-  std::optional<Advance> out = fix_mode_for(
-      a, res.blocking,
-      "objects close the way to x* together with visible unknown obstacles: " + res.reason);
+  std::optional<Advance> out;
+  if (res.verdict == topology::Verdict::kBlockedByObjects) {
+    out = fix_mode_for(
+        a, res.blocking,
+        "objects close the way to x* together with visible unknown obstacles: " + res.reason);
+  } else if (res.verdict == topology::Verdict::kReachable) {
+    // The exact check finds a way that the mapped space (its polygonal dilations) closes: a gap
+    // within millimetres of the pair's width. Objects that narrow it, as in `narrow`.
+    if (const std::optional<Narrowing> n =
+            grown_blockers(fixed, false, radius, center, *a.target)) {
+      out = fix_mode_for(a, n->blocking,
+                         "objects narrow the way to x* beside visible unknown obstacles (grown "
+                         "by " +
+                             fmt(n->slack) + " m): " + n->reason);
+    }
+  }
   if (out) ++recoveries_.fragment_fixes;
   return out;
 }
@@ -848,9 +876,9 @@ bool Executive::plan_guide(Activity& a, const Point& center, double t, std::stri
   if (p_.robust.widen && a.guides > 0) {
     GuideParams wide = p_.guide;
     wide.avoid = kGuideWiden * a.guides;
-    path = guide_path(controller_.mapped().freespace, center, a.goal, wide);
+    path = guide_to(a, center, wide);
   }
-  if (!path) path = guide_path(controller_.mapped().freespace, center, a.goal, p_.guide);
+  if (!path) path = guide_to(a, center, p_.guide);
   if (!path || path->size() < 2) {
     if (path && p_.robust.track && !a.tracking) {
       // x* in sight (the segment to it keeps the guide's clearance in F_k), yet the law
@@ -877,6 +905,39 @@ bool Executive::plan_guide(Activity& a, const Point& center, double t, std::stri
   return true;
 }
 
+// A guide path from `center` to x* in F_k; with RobustParams::memory around what has been seen of
+// the unknown obstacles too, in F_k alone when that finds none.
+std::optional<std::vector<Point>> Executive::guide_to(const Activity& a, const Point& center,
+                                                      const GuideParams& gp) const {
+  const geometry::Region& free = controller_.mapped().freespace;
+  if (p_.robust.memory) {
+    const std::vector<geometry::Polygon> seen = seen_dilated(a.built_radius);
+    if (!seen.empty()) {
+      if (auto path = guide_path(free, center, a.goal, gp, seen)) return path;
+    }
+  }
+  return guide_path(free, center, a.goal, gp);
+}
+
+// What has been seen of each unknown obstacle (perception::SemanticMap::seen) dilated by
+// `radius`: the hull's Minkowski sum with the regular kSeenDilationSides-gon circumscribed about
+// the disk of that radius (a convex superset of the round dilation F_k uses).
+std::vector<geometry::Polygon> Executive::seen_dilated(double radius) const {
+  const geometry::Polygon ring =
+      geometry::regular_polygon({Point::Zero(), radius}, kSeenDilationSides, true);
+  std::vector<geometry::Polygon> out;
+  for (const geometry::Polygon& h : map_.seen()) {
+    if (h.size() < 3) continue;
+    std::vector<Point> points;
+    points.reserve(h.size() * ring.size());
+    for (const Point& v : h.vertices) {
+      for (const Point& w : ring.vertices) points.push_back(v + w);
+    }
+    out.push_back(geometry::convex_hull(std::move(points)));
+  }
+  return out;
+}
+
 // Robust variant (RobustParams::face): after a back-up, turn in place toward the law's goal
 // `nav` (kFaceTolerance), as far as the carried object stays clear; then the law resumes.
 std::optional<Executive::Advance> Executive::face(Activity& a, const Pose& pose, const Point& nav,
@@ -885,7 +946,8 @@ std::optional<Executive::Advance> Executive::face(Activity& a, const Pose& pose,
   out.u = reactive::align_command(pose.psi, pose.x, nav, p_.nav);
   if ((nav - pose.x).norm() <= p_.goal_tolerance ||
       reactive::aligned(pose.psi, pose.x, nav, kFaceTolerance) ||
-      (map_.carried() && !step_clear(pose, reactive::unicycle_step(pose, out.u, dt)))) {
+      (map_.carried() && !step_clear(pose, reactive::unicycle_step(pose, out.u, dt))) ||
+      !centre_kept(pose, reactive::unicycle_step(pose, out.u, dt))) {
     a.facing = Facing::kNo;
     a.monitor.reset(t);
     return std::nullopt;
@@ -914,11 +976,20 @@ std::optional<Executive::Advance> Executive::track(Activity& a, const Pose& pose
 // The step from `pose` to `next` keeps the robot, and the object it carries (rigidly: its offset
 // turns with the heading), clear of everything the map knows.
 bool Executive::step_clear(const Pose& pose, const Pose& next) const {
-  if (known_clearance(map_, next.x) < p_.robot_radius) return false;
+  // Within kStepClearance of what is known, a step may not come closer: a back-up that slid
+  // along an unknown obstacle at 0.1 mm, choosing a new move every few steps, touched it in
+  // Box2D (measured).
+  auto kept = [&](const Point& from, const Point& to, double radius) {
+    const double after = known_clearance(map_, to) - radius;
+    return after >= kStepClearance || after >= known_clearance(map_, from) - radius;
+  };
+  if (known_clearance(map_, next.x) < p_.robot_radius || !kept(pose.x, next.x, p_.robot_radius)) {
+    return false;
+  }
   if (const std::optional<std::string> carried = map_.carried()) {
     const geometry::Disk m = *map_.object(*carried);
     const Point moved = next.x + Eigen::Rotation2Dd(next.psi - pose.psi) * (m.center - pose.x);
-    if (known_clearance(map_, moved) < m.radius) return false;
+    if (known_clearance(map_, moved) < m.radius || !kept(m.center, moved, m.radius)) return false;
   }
   return true;
 }
@@ -931,6 +1002,16 @@ Executive::Advance Executive::command(Activity& a, const Pose& pose, double rho,
   try {
     out.u = map_.carried() ? controller_.pair(pose, rho, dt) : controller_.unicycle(pose, dt);
   } catch (const reactive::OutsideModelFreespace& e) {
+    if (p_.robust.convex_fallback && !a.convex_all && centre_inside(a, pose)) {
+      // The centre lies inside F_k, clear of ∂F_k, yet h took it into a model obstacle: the
+      // purge of a cluster deforms space across a convex obstacle near it (the separation of
+      // [7] broken). Convex pieces keep h the identity there.
+      a.convex_all = true;
+      a.built = false;
+      ++recoveries_.singular;
+      out.kind = Advance::kRestart;
+      return out;
+    }
     // The centre touches a dilation (pressed into a corner): back up, then plan again.
     if (!p_.robust.back_out) throw;
     return start_back_out(a, pose, e.what(), t, dt);
@@ -942,6 +1023,33 @@ Executive::Advance Executive::command(Activity& a, const Pose& pose, double rho,
     out.kind = Advance::kRestart;
   }
   return out;
+}
+
+// Robust variant, carrying: does a checked move (a turn toward the goal, a back-up) keep the pair
+// centre in the last mapped freespace F_k, or, when it is outside already, take it no deeper?
+// The pair centre lies ahead of the axle, so a turn in place swings it: turns after a back-up
+// took it 3 cm into a dilation (measured), where the law of [7] cannot run (its model point lies
+// in a model obstacle) and four back-ups were spent in vain. Without an object: always.
+bool Executive::centre_kept(const Pose& pose, const Pose& next) const {
+  const std::optional<std::string> carried = map_.carried();
+  if (!carried || controller_.mapped().freespace.outer.size() < 3) return true;
+  const double rho = object_radius(*carried);
+  const geometry::Region& free = controller_.mapped().freespace;
+  auto depth = [&](const Pose& q) {
+    const Point c = reactive::pair_center(q.x, q.psi, rho);
+    const double d = geometry::nearest_on_boundary(free, c).distance;
+    return geometry::contains(free, c) ? -d : d;
+  };
+  const double after = depth(next);
+  return after <= 0 || after <= depth(pose);
+}
+
+// Is the centre (robot, or pair) inside the mapped freespace F_k, kContactClearance from ∂F_k?
+bool Executive::centre_inside(const Activity& a, const Pose& pose) const {
+  const Point center = moving(a, pose).center;
+  const geometry::Region& free = controller_.mapped().freespace;
+  return geometry::contains(free, center) &&
+         geometry::nearest_on_boundary(free, center).distance >= kContactClearance;
 }
 
 Executive::Advance Executive::start_back_out(Activity& a, const Pose& pose, const std::string& why,
@@ -991,12 +1099,19 @@ Executive::Advance Executive::back_out(Activity& a, const Pose& pose, double t, 
   }
   const double v = std::min(p_.backoff_speed, (p_.robust.back_out_step - a.backing_travel) / dt);
   const double w = carried ? std::min(p_.nav.omega_max, v / rho) : 0;
-  const Twist moves[] = {{-v, 0}, {v, 0}, {0, w}, {0, -w}};
-  const int count = carried ? 4 : 2;
+  const Twist moves[] = {{-v, 0},     {v, 0},       {0, w},     {0, -w},
+                         {-v, w / 2}, {-v, -w / 2}, {v, w / 2}, {v, -w / 2}};
+  // Without RobustParams::escape the pair's back-up has the first four moves; escape adds arcs,
+  // and from the back-up after kPairLookaheadAfter looks all of them ahead.
+  const int count = carried ? (p_.robust.escape ? 8 : 4) : 2;
   auto centre = [&](const Pose& q) {
     return carried ? reactive::pair_center(q.x, q.psi, rho) : q.x;
   };
   const double here = known_clearance(map_, centre(pose), carried.value_or(""));
+  if (carried && p_.robust.escape && a.back_outs > kPairLookaheadAfter && a.backing_dir < 0 &&
+      a.backing_travel == 0) {
+    a.backing_dir = clearest_pair_move(pose, std::span(moves, count), rho, here, dt);
+  }
   auto usable = [&](int k, bool away) {
     const Pose next = reactive::unicycle_step(pose, moves[k], dt);
     if (!step_clear(pose, next)) return false;
@@ -1020,6 +1135,36 @@ Executive::Advance Executive::back_out(Activity& a, const Pose& pose, double t, 
   out.u = moves[a.backing_dir];
   a.backing_travel += (std::abs(out.u.v) + rho * std::abs(out.u.omega)) * dt;
   return out;
+}
+
+// Robust variant (RobustParams::escape), carrying: each move of `moves` looked ahead for
+// back_out_step of travel (or until a step would not keep the robot and the object clear of
+// everything known), and the index of the one whose end leaves the pair's centre clearest, if
+// clearer than `here`; -1 otherwise. The first move that takes the centre away at its first step
+// (the back-up without escape) backs straight into the wedge between two obstacles as often as
+// out of it: the pair centre must leave both dilations, and a turn or an arc often does.
+int Executive::clearest_pair_move(const Pose& pose, std::span<const Twist> moves, double rho,
+                                  double here, double dt) const {
+  const std::string carried = *map_.carried();
+  int best = -1;
+  double best_clearance = here;
+  for (std::size_t k = 0; k < moves.size(); ++k) {
+    Pose q = pose;
+    double travel = 0;
+    while (travel < p_.robust.back_out_step) {
+      const Pose next = reactive::unicycle_step(q, moves[k], dt);
+      if (!step_clear(pose, next) || !centre_kept(q, next)) break;
+      q = next;
+      travel += (std::abs(moves[k].v) + rho * std::abs(moves[k].omega)) * dt;
+    }
+    if (travel == 0) continue;
+    const double c = known_clearance(map_, reactive::pair_center(q.x, q.psi, rho), carried);
+    if (c > best_clearance + kPairMoveGain) {
+      best_clearance = c;
+      best = static_cast<int>(k);
+    }
+  }
+  return best;
 }
 
 // Robust variant (RobustParams::escape): along each of kEscapeHeadings straight lines from x,
@@ -1301,16 +1446,7 @@ Executive::Advance Executive::plan_grasp(Activity& a, const Pose& pose) {
   const geometry::Region* f = &here.freespace;
   const geometry::RegionSet pair_free = pair_freespace(a.object);
   topology_checks_ += 1;
-  const GraspCandidate* reachable = nullptr;
-  const GraspCandidate* fallback = nullptr;
-  for (const GraspCandidate& g : candidates) {
-    if (!geometry::contains(pair_free, g.pair_center)) continue;
-    if (fallback == nullptr) fallback = &g;
-    if (geometry::contains(*f, g.approach)) {
-      reachable = &g;
-      break;
-    }
-  }
+  const auto [reachable, fallback] = choose_side(a, candidates, pair_free, *f);
   if (fallback == nullptr) {
     out.kind = Advance::kInfeasible;
     out.reason = "no side of " + a.object + " from which the robot–object pair would be free";
@@ -1343,6 +1479,38 @@ Executive::Advance Executive::plan_grasp(Activity& a, const Pose& pose) {
   }
   remember_plan(a);
   return out;
+}
+
+// GRASP's side (paper §IV): the first candidate whose pair centre lies in the pair's freespace
+// and whose approach point lies in F (reachable), and the first with the pair free alone
+// (fallback, for the topology check). Robust variant (RobustParams::fragments): sides whose
+// approach point or pair lies within the dilation of a visible unknown fragment (which the
+// topology check does not model) come last.
+std::pair<const GraspCandidate*, const GraspCandidate*> Executive::choose_side(
+    const Activity& a, const std::vector<GraspCandidate>& candidates,
+    const geometry::RegionSet& pair_free, const geometry::Region& f) const {
+  const GraspCandidate* reachable = nullptr;
+  const GraspCandidate* fallback = nullptr;
+  const double pair_radius = p_.robot_radius + object_radius(a.object) + p_.grasp.pair_margin;
+  auto clear_of_fragments = [&](const GraspCandidate& g) {
+    return known_clearance(map_, g.approach, a.object) >= plan_radius(a) &&
+           known_clearance(map_, g.pair_center, a.object) >= pair_radius;
+  };
+  for (bool clear : {true, false}) {
+    if (clear && !p_.robust.fragments) continue;
+    for (const GraspCandidate& g : candidates) {
+      if (!geometry::contains(pair_free, g.pair_center) || (clear && !clear_of_fragments(g))) {
+        continue;
+      }
+      if (fallback == nullptr) fallback = &g;
+      if (geometry::contains(f, g.approach)) {
+        reachable = &g;
+        break;
+      }
+    }
+    if (reachable != nullptr) break;
+  }
+  return {reachable, fallback};
 }
 
 void Executive::enter_fix(const std::vector<std::string>& blocking, double t) {

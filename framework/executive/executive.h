@@ -38,7 +38,9 @@
 #include <cstdint>
 #include <map>
 #include <optional>
+#include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "executive/guide_path.h"
@@ -81,6 +83,9 @@ inline constexpr double kDropSlack = 0.15;
 // two convex pieces of a cluster meet, LF(y) shrinks to a wedge at y and every goal beyond it
 // projects onto y itself: the robot stands still whatever its goal.
 inline constexpr double kContactClearance = 0.02;
+// m: a checked step (back-up, turn, track, withdrawal) that would end closer than this to what is
+// known must not bring the robot or the carried object any closer than it is (step_clear).
+inline constexpr double kStepClearance = 1e-3;
 // rad: RobustParams::face turns until the bearing error to the law's goal is below this.
 inline constexpr double kFaceTolerance = 0.05;
 // m: RobustParams::narrow grows every movable object by these in turn, the first check that
@@ -89,16 +94,27 @@ inline constexpr double kNarrowSlacks[] = {0.05, 0.1, 0.2};
 // Headings RobustParams::escape tries, evenly spaced, and the m between the clearance samples
 // along each straight escape.
 inline constexpr int kEscapeHeadings = 32;
+// m: a looked-ahead back-up move of the pair must end at least this much clearer than the last
+// best (and than where the pair stands) to be chosen (RobustParams::escape).
+inline constexpr double kPairMoveGain = 1e-3;
+// The pair's back-ups of an action after this many are looked ahead (RobustParams::escape); the
+// first ones take the first move away. Looking ahead from the first back-up on completed 8 more
+// trials of a 480-trial sweep and lost 10, most to a model point outside the model freespace.
+inline constexpr int kPairLookaheadAfter = 2;
 inline constexpr double kEscapeSample = 0.02;
 // m of extra clearance each failed guide path asks of the next (RobustParams::widen).
 inline constexpr double kGuideWiden = 0.1;
+// Sides of the polygon about the robot's (or pair's) disk by which RobustParams::memory dilates
+// what has been seen of an unknown obstacle (a superset of the round dilation by 2 %).
+inline constexpr int kSeenDilationSides = 16;
 
 struct RobustParams {
   // When the progress monitor fires, follow waypoints of a path in the known freespace
   // (guide_path.h) instead of ending the action stuck, up to GuideParams::max_recoveries times.
   bool guide = true;
-  // Keep clusters the diffeomorphism cannot purge, or where Dh turns singular, as convex
-  // pieces (ReactiveController::set_convex_fallback) instead of ending the action stuck.
+  // Keep clusters the diffeomorphism cannot purge, or where Dh turns singular or h takes a
+  // centre inside F_k into a model obstacle, as convex pieces
+  // (ReactiveController::set_convex_fallback) instead of ending the action stuck.
   bool convex_fallback = true;
   // When the robot's (or pair's) centre is not in its freespace (a grasp beside a wall, a
   // push), move off by back_out_step instead of ending the action stuck: straight back, else
@@ -178,7 +194,12 @@ struct RobustParams {
   // reverse, whichever turn is shorter) first. The paper's heading alone offers two directions,
   // both into the walls when the law has pressed the robot into the apex of a concavity
   // (measured: the robot stayed there through four back-ups). Turning in place keeps a disk
-  // robot where it is.
+  // robot where it is. Carrying, the pair's back-up is the move, of straight back or ahead,
+  // turns in place and arcs back or ahead either way, whose look-ahead over back_out_step ends
+  // with the pair centre clearest (clearest_pair_move), from the back-up after
+  // kPairLookaheadAfter in an action on; before it, and without escape, the first of the
+  // straight moves and turns that takes the centre away at its first step, which drove a pair
+  // wedged between two obstacles back and forth between them (measured).
   bool escape = true;
   // Each guide path after a failed one (the progress monitor fired again while following it)
   // avoids what is closer than kGuideWiden more to ∂F_k than the last did (GuideParams::avoid),
@@ -192,8 +213,18 @@ struct RobustParams {
   // unknown fragments close the way, alone or together with objects: the check runs again with
   // the fragments as fixed obstacles, and objects that close the way with them are moved by Fix
   // mode (once per action). Measured: a RELEASE whose region lay past a gap between an unknown
-  // obstacle and an object released earlier ended infeasible, the object never named.
+  // obstacle and an object released earlier ended infeasible, the object never named. When the
+  // check finds x* reachable, it runs again with the objects grown (grown_blockers), as
+  // `narrow` does; and GRASP tries first the sides clear of the visible fragments.
   bool fragments = true;
+  // Guide paths keep out of what has been seen of each unknown obstacle so far (the convex hull
+  // of its fragments, perception::SemanticMap::seen, dilated by the mapped space's radius), not
+  // only out of the fragments visible now: the law of [7] and F_k see the visible fragments
+  // alone, so a guide planned after the robot had left a pocket of unknown obstacles led it back
+  // into the same pocket (measured: most of the sweep's "revisited" failures). The hull lies in
+  // the obstacle (it is convex), so a path it blocks is blocked; when it leaves none, the guide
+  // runs in F_k alone.
+  bool memory = true;
   double withdraw_clearance = 0.25;  // m beyond the pair's dilation radius
   double withdraw_max = 1.0;         // m of straight reverse travel at most
   int max_back_outs = 4;             // per action
@@ -203,7 +234,7 @@ struct RobustParams {
 struct RecoveryCounts {
   int guides = 0;          // guide paths followed after the progress monitor fired
   int back_outs = 0;       // straight back-ups out of a dilation
-  int singular = 0;        // actions switched to convex pieces after a singular Dh
+  int singular = 0;        // actions switched to convex pieces (singular Dh, y outside F)
   int fallbacks = 0;       // rebuilds that kept clusters as convex pieces
   int restores = 0;        // objects released into their regions again after Fix mode moved them
   int early_releases = 0;  // RELEASEs ended short of the centroid with the object in the region
@@ -424,6 +455,14 @@ class Executive {
   Advance navigate(Activity& a, const Pose& pose, double t, double dt);
   std::optional<Advance> narrow(Activity& a, const Pose& pose);
   std::optional<Advance> fragment_blockers(Activity& a, double radius, const Point& center);
+  struct Narrowing {
+    std::vector<std::size_t> blocking;  // indices into the map's movable objects
+    std::string reason;
+    double slack = 0;  // m the objects were grown by
+  };
+  std::optional<Narrowing> grown_blockers(const std::vector<geometry::Polygon>& fixed,
+                                          bool familiar_only, double radius, const Point& center,
+                                          const Point& target);
   std::optional<Advance> fix_mode_for(Activity& a, const std::vector<std::size_t>& blocking,
                                       std::string reason);
   void remember_plan(Activity& a) const;
@@ -451,6 +490,13 @@ class Executive {
   // step would not stay clear or the line is driven).
   std::optional<Escape> escape_line(const Point& x) const;
   std::optional<Twist> escape_step(Activity& a, const Pose& pose, double dt);
+  bool centre_inside(const Activity& a, const Pose& pose) const;
+  std::pair<const GraspCandidate*, const GraspCandidate*> choose_side(
+      const Activity& a, const std::vector<GraspCandidate>& candidates,
+      const geometry::RegionSet& pair_free, const geometry::Region& f) const;
+  bool centre_kept(const Pose& pose, const Pose& next) const;
+  int clearest_pair_move(const Pose& pose, std::span<const Twist> moves, double rho, double here,
+                         double dt) const;
   // A back-up (back_out); `contact`: one of the monitor's back-ups off ∂F_k (kContactClearance,
   // bounded by Activity::contact_outs), outside the budget of back-ups out of a dilation.
   Advance start_back_out(Activity& a, const Pose& pose, const std::string& why, double t, double dt,
@@ -458,6 +504,9 @@ class Executive {
   // Plans a guide from `center` to x* in the current mapped space (robust variant); false when
   // the guide budget is spent or no path helps (`note` says which).
   bool plan_guide(Activity& a, const Point& center, double t, std::string& note);
+  std::optional<std::vector<Point>> guide_to(const Activity& a, const Point& center,
+                                             const GuideParams& gp) const;
+  std::vector<geometry::Polygon> seen_dilated(double radius) const;
   bool early_dock(const Activity& a, const Pose& pose);
   geometry::RegionSet pair_freespace(const std::string& object);
   Advance command(Activity& a, const Pose& pose, double rho, double t, double dt);

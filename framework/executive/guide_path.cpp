@@ -8,6 +8,7 @@
 #include <string>
 
 #include "core/error.h"
+#include "geometry/convex.h"
 #include "geometry/distance.h"
 
 namespace rearm::executive {
@@ -39,6 +40,17 @@ void for_each_edge(const Region& r, F&& f) {
   ring(r.outer);
   for (const Polygon& h : r.holes) ring(h);
 }
+
+// The space a path runs through: the region F_k less convex polygons it does not model
+// (guide_path's `blocked`, already dilated).
+struct Space {
+  const Region& free;
+  std::span<const Polygon> blocked;
+  // Is [a, b] in the space, at distance >= c from its boundary?
+  bool segment_clear(const Point& a, const Point& b, double c) const;
+  // Distance from x to the space's boundary; 0 outside.
+  double clearance(const Point& x) const;
+};
 
 // Scanline fill: a cell is free when its centre lies inside an odd number of rings (the holes
 // lie inside the outer ring and are disjoint, so even-odd is F_k's membership).
@@ -117,7 +129,31 @@ void clearance(Raster& g) {
           std::max(0.0f, float((std::sqrt(grid[(j + 1) * w + i + 1]) - 0.5) * g.res));
 }
 
-Raster rasterize(const Region& r, const GuideParams& p) {
+// Cells whose centre lies in a blocked convex polygon are not free (scanline, as in fill).
+void unfill(const Polygon& convex, Raster& g) {
+  double lo = kInf, hi = -kInf;
+  for (const Point& v : convex.vertices) lo = std::min(lo, v.y()), hi = std::max(hi, v.y());
+  const int j0 = std::max(0, static_cast<int>(std::ceil((lo - g.y0) / g.res - 0.5)));
+  const int j1 = std::min(g.ny - 1, static_cast<int>(std::floor((hi - g.y0) / g.res - 0.5)));
+  for (int j = j0; j <= j1; ++j) {
+    const double y = g.y0 + (j + 0.5) * g.res;
+    double x_lo = kInf, x_hi = -kInf;
+    for (std::size_t k = 0; k < convex.size(); ++k) {
+      const Point& a = convex.vertices[k];
+      const Point& b = convex.vertices[(k + 1) % convex.size()];
+      if ((a.y() > y) == (b.y() > y)) continue;
+      const double x = a.x() + (y - a.y()) * (b.x() - a.x()) / (b.y() - a.y());
+      x_lo = std::min(x_lo, x), x_hi = std::max(x_hi, x);
+    }
+    if (!(x_lo <= x_hi)) continue;
+    const int lo_i = std::max(0, static_cast<int>(std::ceil((x_lo - g.x0) / g.res - 0.5)));
+    const int hi_i = std::min(g.nx - 1, static_cast<int>(std::floor((x_hi - g.x0) / g.res - 0.5)));
+    for (int i = lo_i; i <= hi_i; ++i) g.free[g.index(i, j)] = 0;
+  }
+}
+
+Raster rasterize(const Space& s, const GuideParams& p) {
+  const Region& r = s.free;
   Raster g;
   double lo_x = kInf, lo_y = kInf, hi_x = -kInf, hi_y = -kInf;
   for (const Point& v : r.outer.vertices) {
@@ -132,12 +168,14 @@ Raster rasterize(const Region& r, const GuideParams& p) {
   g.ny = std::max(1, static_cast<int>(std::ceil((hi_y - lo_y) / g.res)));
   g.free.assign(static_cast<std::size_t>(g.nx) * g.ny, 0);
   fill(r, g);
+  for (const Polygon& b : s.blocked) unfill(b, g);
   clearance(g);
   return g;
 }
 
-// The free cell nearest to x among those within kEndpointSearchCells whose centre x sees in F_k.
-std::optional<int> endpoint_cell(const Raster& g, const Region& r, const Point& x) {
+// The free cell nearest to x among those within kEndpointSearchCells whose centre x sees in the
+// space.
+std::optional<int> endpoint_cell(const Raster& g, const Space& r, const Point& x) {
   const int ci = static_cast<int>(std::floor((x.x() - g.x0) / g.res));
   const int cj = static_cast<int>(std::floor((x.y() - g.y0) / g.res));
   std::optional<int> best;
@@ -146,7 +184,7 @@ std::optional<int> endpoint_cell(const Raster& g, const Region& r, const Point& 
     for (int i = ci - kEndpointSearchCells; i <= ci + kEndpointSearchCells; ++i) {
       if (i < 0 || j < 0 || i >= g.nx || j >= g.ny || !g.free[g.index(i, j)]) continue;
       const double d = (g.center(i, j) - x).norm();
-      if (d < best_d && segment_clear(r, x, g.center(i, j), 0)) best_d = d, best = g.index(i, j);
+      if (d < best_d && r.segment_clear(x, g.center(i, j), 0)) best_d = d, best = g.index(i, j);
     }
   }
   return best;
@@ -205,7 +243,7 @@ std::optional<std::vector<int>> search(const Raster& g, int start, int goal, con
 // capped at `comfort`, never below `floor`): the A* search prefers cells `comfort` from ∂F_k,
 // and a shortcut that hugs a corner again would bring the law back to the corners where
 // clusters stop it.
-std::vector<Point> shortcut(const Region& r, const std::vector<Point>& line,
+std::vector<Point> shortcut(const Space& r, const std::vector<Point>& line,
                             const std::vector<double>& clear, double res, double floor,
                             double comfort) {
   std::vector<Point> out;
@@ -216,18 +254,13 @@ std::vector<Point> shortcut(const Region& r, const std::vector<Point>& line,
     for (std::size_t k = anchor + 2; k < line.size(); ++k) {
       least = std::min(least, clear[k]);
       const double need = std::clamp(least - res, floor, std::max(floor, comfort));
-      if (!segment_clear(r, line[anchor], line[k], need)) break;
+      if (!r.segment_clear(line[anchor], line[k], need)) break;
       next = k;
     }
     out.push_back(line[next]);
     anchor = next;
   }
   return out;
-}
-
-// Clearance of an endpoint of the path (0 outside `r`: then no shortcut from it keeps any).
-double endpoint_clearance(const Region& r, const Point& x) {
-  return geometry::contains(r, x) ? geometry::nearest_on_boundary(r, x).distance : 0;
 }
 
 double cross(const Point& a, const Point& b) { return a.x() * b.y() - a.y() * b.x(); }
@@ -280,11 +313,38 @@ bool segment_clear(const Region& free, const Point& a, const Point& b, double c)
 
 namespace {
 
+// Does [a, b] keep the distance c from the closed convex polygon?
+bool clear_of(const Polygon& convex, const Point& a, const Point& b, double c) {
+  if (geometry::convex_contains(convex, a) || geometry::convex_contains(convex, b) ||
+      geometry::convex_contains(convex, Point((a + b) / 2))) {
+    return false;
+  }
+  for (std::size_t k = 0; k < convex.size(); ++k) {
+    const Point& p = convex.vertices[k];
+    const Point& q = convex.vertices[(k + 1) % convex.size()];
+    if (segments_cross(a, b, p, q) || (c > 0 && segment_distance(a, b, p, q) < c)) return false;
+  }
+  return true;
+}
+
+bool Space::segment_clear(const Point& a, const Point& b, double c) const {
+  if (!executive::segment_clear(free, a, b, c)) return false;
+  return std::all_of(blocked.begin(), blocked.end(),
+                     [&](const Polygon& p) { return clear_of(p, a, b, c); });
+}
+
+double Space::clearance(const Point& x) const {
+  if (!geometry::contains(free, x)) return 0;
+  double d = geometry::nearest_on_boundary(free, x).distance;
+  for (const Polygon& p : blocked) d = std::min(d, geometry::distance(p, x));
+  return d;
+}
+
 // Dijkstra over the raster's 8-neighbours from the cell of `from` (diagonals only where both
 // side cells are free): `visit(cell, cost)` in order of cost until it returns true. False when
 // `from` has no cell or the walk ends unstopped.
 template <typename Visit>
-bool walk(const Raster& g, const Region& free, const Point& from, Visit&& visit) {
+bool walk(const Raster& g, const Space& free, const Point& from, Visit&& visit) {
   const std::optional<int> s = endpoint_cell(g, free, from);
   if (!s) return false;
   std::vector<float> cost(g.free.size(), kInf);
@@ -330,12 +390,13 @@ std::optional<ClearPoint> nearest_clear_point(
   validate(p);
   check_search(from, 0.0);
   for (double c : clearances) check_search(from, c);
-  const Raster g = rasterize(free, p);
+  const Space space{free, {}};
+  const Raster g = rasterize(space, p);
   const std::size_t last = clearances.size();  // the clearest-point level
   std::optional<ClearPoint> out;
   std::size_t open_levels = last;  // levels that can still improve on `out`
   float best = -kInf;              // the clearest accepted cell so far (clearest_last)
-  walk(g, free, from, [&](int c, float) {
+  walk(g, space, from, [&](int c, float) {
     const Point q = g.center(c % g.nx, c / g.nx);
     for (std::size_t k = 0; k < open_levels; ++k) {
       if (g.clear[c] >= clearances[k] && accept(q, k)) {
@@ -364,24 +425,32 @@ std::optional<Point> clearest_point(const Region& free, const Point& from,
 }
 
 std::optional<std::vector<Point>> guide_path(const Region& free, const Point& from, const Point& to,
-                                             const GuideParams& p) {
+                                             const GuideParams& p,
+                                             std::span<const Polygon> blocked) {
   validate(p);
   if (!from.allFinite() || !to.allFinite()) throw Error("guide: endpoints must be finite");
-  const Raster g = rasterize(free, p);
-  const std::optional<int> s = endpoint_cell(g, free, from);
-  const std::optional<int> t = endpoint_cell(g, free, to);
+  // A blocked polygon holding an endpoint is left out: the robot stands there, or x* lies there.
+  std::vector<Polygon> kept;
+  for (const Polygon& b : blocked) {
+    if (b.size() < 3) throw Error("guide: a blocked polygon needs at least 3 vertices");
+    if (!geometry::convex_contains(b, from) && !geometry::convex_contains(b, to)) kept.push_back(b);
+  }
+  const Space space{free, kept};
+  const Raster g = rasterize(space, p);
+  const std::optional<int> s = endpoint_cell(g, space, from);
+  const std::optional<int> t = endpoint_cell(g, space, to);
   if (!s || !t) return std::nullopt;
   const std::optional<std::vector<int>> cells = search(g, *s, *t, p);
   if (!cells) return std::nullopt;
   std::vector<Point> line{from};
-  std::vector<double> clear{endpoint_clearance(free, from)};
+  std::vector<double> clear{space.clearance(from)};
   for (int c : *cells) {
     line.push_back(g.center(c % g.nx, c / g.nx));
     clear.push_back(g.clear[c]);
   }
   line.push_back(to);
-  clear.push_back(endpoint_clearance(free, to));
-  return shortcut(free, line, clear, g.res, p.clearance, p.comfort);
+  clear.push_back(space.clearance(to));
+  return shortcut(space, line, clear, g.res, p.clearance, p.comfort);
 }
 
 }  // namespace rearm::executive

@@ -45,12 +45,14 @@ inline constexpr double kAvoidExempt = 0.75;
 void validate(const GuideParams& p);
 
 // Waypoints from `from` to `to` (the last waypoint is `to`; `from` is not included) through the
-// region `free`, or nullopt when the raster finds no path (then none at this resolution: the
-// passage is narrower than a cell, or the points are in different components).
-std::optional<std::vector<geometry::Point>> guide_path(const geometry::Region& free,
-                                                       const geometry::Point& from,
-                                                       const geometry::Point& to,
-                                                       const GuideParams& p);
+// region `free` less the convex polygons `blocked` (counter-clockwise, already dilated; one that
+// contains `from` or `to` is left out), or nullopt when the raster finds no path (then none at
+// this resolution: the passage is narrower than a cell, or the points are in different
+// components). Throws rearm::Error on non-finite endpoints or a blocked polygon of fewer than 3
+// vertices.
+std::optional<std::vector<geometry::Point>> guide_path(
+    const geometry::Region& free, const geometry::Point& from, const geometry::Point& to,
+    const GuideParams& p, std::span<const geometry::Polygon> blocked = {});
 
 // A point found by nearest_clear_point, with the index of the clearance level it meets.
 struct ClearPoint {

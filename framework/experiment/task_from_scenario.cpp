@@ -77,6 +77,7 @@ executive::TaskSpec task_spec(const scenario::Scenario& s) {
   e.robust.escape = s.controller.escape;
   e.robust.widen = s.controller.widen;
   e.robust.fragments = s.controller.fragments;
+  e.robust.memory = s.controller.memory;
   if (s.controller.variant == "paper") e.robust.contact_margin = 0;
   e.max_ltl_actions = s.simulation.max_actions;
   return t;

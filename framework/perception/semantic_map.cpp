@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "core/error.h"
+#include "geometry/convex.h"
 
 namespace rearm::perception {
 namespace {
@@ -108,6 +109,7 @@ SemanticMap::SemanticMap(const World& world, const Sensor& sensor, const ChangeT
   const std::size_t cap = largest + static_cast<std::size_t>(sensor_.sides());
   visible_.resize(nu);
   candidate_.resize(nu);
+  seen_.resize(nu);
   for (std::size_t j = 0; j < nu; ++j) {
     visible_[j].reserve(cap);
     candidate_[j].reserve(cap);
@@ -161,6 +163,7 @@ bool SemanticMap::update(const Point& robot) {
     std::vector<Point>& c = candidate_[j];
     if (box_within(unknown_boxes_[j], robot, range * (1 + sensor_.params().footprint_tolerance))) {
       sensor_.fragment(world_.unknown[j].polygon, robot, c, scratch_);
+      remember(j, c);
     } else {
       c.clear();
     }
@@ -180,6 +183,17 @@ bool SemanticMap::update(const Point& robot) {
 
   if (changed) bump();
   return changed;
+}
+
+void SemanticMap::remember(std::size_t j, const std::vector<Point>& fragment) {
+  Polygon& hull = seen_[j];
+  const bool grows = std::any_of(fragment.begin(), fragment.end(), [&](const Point& v) {
+    return hull.size() < 3 || !geometry::convex_contains(hull, v, kSeenGrowth);
+  });
+  if (!grows) return;
+  std::vector<Point> points = hull.vertices;
+  points.insert(points.end(), fragment.begin(), fragment.end());
+  hull = geometry::remove_collinear(geometry::convex_hull(std::move(points)), kSeenCollinear);
 }
 
 void SemanticMap::bump() {

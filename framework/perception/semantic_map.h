@@ -1,6 +1,8 @@
 // The semantic map (paper §II and Appendix II; docs/reactive.md §2): what the robot knows of the
 // world. Familiar obstacles localized so far (memory, never forgotten), the fragments of unknown
-// convex obstacles visible now (recomputed at every update, not remembered), and the movable
+// convex obstacles visible now (recomputed at every update; the reactive layer of [7] sees these
+// alone), what has been seen of each unknown obstacle so far (for the robust variant's guide
+// paths, which the paper does not have), and the movable
 // objects (known at all times) except the carried one. A `version` counter increments exactly
 // when this knowledge changes, so the reactive layer rebuilds its diffeomorphism only then
 // (docs/reactive.md §2: "rebuild only when the semantic map changes").
@@ -35,6 +37,13 @@ inline constexpr double kObjectMoveTolerance = 1e-3;
 // the disk of radius R − s around it: everything within R − s of the robot is known as at
 // every update. At most the sensing range R over kMaxScanSpacingFraction.
 inline constexpr double kMaxScanSpacingFraction = 4;
+
+// What has been seen of an unknown obstacle grows (its convex hull is recomputed) when a vertex
+// of a new fragment lies more than this (m) outside it.
+inline constexpr double kSeenGrowth = 1e-3;
+// Hull vertices whose turn is below this (the cross product of the unit edge directions) are
+// dropped: the cut points of successive footprints on one obstacle edge are collinear.
+inline constexpr double kSeenCollinear = 1e-9;
 
 struct ChangeTolerances {
   double fragment = kFragmentTolerance;
@@ -80,6 +89,10 @@ class SemanticMap {
   // obstacle each belongs to; as computed at the last version change.
   const std::vector<Polygon>& unknown() const { return unknown_; }
   const std::vector<std::string>& unknown_ids() const { return unknown_ids_; }
+  // Per unknown obstacle, in world order: the convex hull of every fragment read so far (empty
+  // when none was). A subset of the obstacle, which is convex; never forgotten, and its growth
+  // does not change the version (the reactive layer of [7] sees the visible fragments only).
+  const std::vector<Polygon>& seen() const { return seen_; }
   // Movable obstacles (every object but the carried one) in world order, positions as of the
   // last version change (each within object_move of the truth).
   const std::vector<Disk>& movable() const { return movable_; }
@@ -96,6 +109,7 @@ class SemanticMap {
   void bump();                                         // version + 1 and a fresh movable snapshot
   std::size_t find_object(std::string_view id) const;  // throws on an unknown id
   bool id_in_use(std::string_view id) const;
+  void remember(std::size_t j, const std::vector<Point>& fragment);  // grows seen_[j]
 
   World world_;
   Sensor sensor_;
@@ -113,6 +127,7 @@ class SemanticMap {
   std::vector<Point> scratch_;
   std::vector<Polygon> unknown_;
   std::vector<std::string> unknown_ids_;
+  std::vector<Polygon> seen_;        // per unknown obstacle: hull of its fragments so far
   std::optional<Point> last_robot_;  // robot position of the last update
   std::optional<Point> scanned_;     // robot position of the last reading of the fragments
 

@@ -80,6 +80,7 @@ struct Controller {
   bool widen = true;            // robust only: each failed guide's successor keeps more clearance
   bool scan = true;             // robust only: read unknown fragments every scan_spacing
   bool fragments = true;        // robust only: Fix mode for objects closing x* off with fragments
+  bool memory = true;           // robust only: guide paths avoid what was seen of unknown obstacles
 };
 
 // The robust variant's switches by key (scenario files; the ablation methods "rearm-no<key>").
@@ -88,15 +89,15 @@ struct RobustSwitch {
   bool Controller::*flag;
 };
 inline constexpr RobustSwitch kRobustSwitches[] = {
-    {"guide", &Controller::guide},        {"convex_fallback", &Controller::convex_fallback},
-    {"back_out", &Controller::back_out},  {"restore", &Controller::restore},
-    {"drop", &Controller::drop},          {"early_release", &Controller::early_release},
-    {"withdraw", &Controller::withdraw},  {"release_point", &Controller::release_point},
-    {"bevel", &Controller::bevel},        {"early_dock", &Controller::early_dock},
-    {"face", &Controller::face},          {"narrow", &Controller::narrow},
-    {"track", &Controller::track},        {"escape", &Controller::escape},
-    {"widen", &Controller::widen},        {"scan", &Controller::scan},
-    {"fragments", &Controller::fragments}};
+    {"guide", &Controller::guide},         {"convex_fallback", &Controller::convex_fallback},
+    {"back_out", &Controller::back_out},   {"restore", &Controller::restore},
+    {"drop", &Controller::drop},           {"early_release", &Controller::early_release},
+    {"withdraw", &Controller::withdraw},   {"release_point", &Controller::release_point},
+    {"bevel", &Controller::bevel},         {"early_dock", &Controller::early_dock},
+    {"face", &Controller::face},           {"narrow", &Controller::narrow},
+    {"track", &Controller::track},         {"escape", &Controller::escape},
+    {"widen", &Controller::widen},         {"scan", &Controller::scan},
+    {"fragments", &Controller::fragments}, {"memory", &Controller::memory}};
 
 // Sets the variant ("robust" or "paper") and every switch: all on, or all off.
 inline void set_variant(Controller& c, const std::string& variant) {

@@ -101,7 +101,8 @@ void read_controller(Reader& r, const YAML::Node& n, Controller& c) {
                   "escape",
                   "widen",
                   "scan",
-                  "fragments"});
+                  "fragments",
+                  "memory"});
   struct Field {
     const char* key;
     double* value;

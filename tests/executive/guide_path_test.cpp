@@ -135,6 +135,45 @@ TEST(GuidePath, NoPathBetweenComponentsOrFromOutside) {
   EXPECT_FALSE(guide_path(r, Point(-1, 1), Point(9, 9), GuideParams{}).has_value());
 }
 
+// Blocked convex polygons (what has been seen of unknown obstacles, RobustParams::memory) are
+// kept out of like holes: against a triangle across the direct line, every sampled leg point is
+// outside it (exact point location); the length is at least the taut string over its apex.
+TEST(GuidePath, KeepsOutOfBlockedPolygonsUnlessTheyHoldAnEndpoint) {
+  const Region r{rect(0, 0, 10, 10), {}};
+  const Polygon tri{{{5, 0.5}, {5.5, 7}, {4.5, 7}}};  // counter-clockwise
+  const Point from(2, 3), to(8, 3);
+  const Polygon blocked[] = {tri};
+  const auto path = guide_path(r, from, to, GuideParams{}, blocked);
+  ASSERT_TRUE(path.has_value());
+  Point a = from;
+  double length = 0;
+  for (const Point& b : *path) {
+    for (int k = 0; k <= 1000; ++k) {
+      const Point q = a + (b - a) * (k / 1000.0);
+      EXPECT_FALSE(geometry::contains(tri, q)) << "(" << q.x() << ", " << q.y() << ")";
+    }
+    length += (b - a).norm();
+    a = b;
+  }
+  // Over the apex (4.5, 7)–(5.5, 7), or under the base corner (5, 0.5): the shorter is over.
+  const double under = 2 * std::sqrt(9.0 + 2.5 * 2.5);
+  EXPECT_GE(
+      length,
+      std::min(under, (Point(4.5, 7) - from).norm() + 1 + (to - Point(5.5, 7)).norm()) - 1e-9);
+  // The same region without the polygon: one straight leg.
+  EXPECT_EQ(guide_path(r, from, to, GuideParams{})->size(), 1u);
+  // A blocked polygon that holds the start is left out (the robot stands there).
+  const auto inside = guide_path(r, Point(5, 3), to, GuideParams{}, blocked);
+  ASSERT_TRUE(inside.has_value());
+  EXPECT_EQ(inside->size(), 1u);
+  // A wall of blocked polygons across the room separates the two sides.
+  const Polygon wall{{{4.9, -1}, {5.1, -1}, {5.1, 11}, {4.9, 11}}};
+  const Polygon walls[] = {wall};
+  EXPECT_FALSE(guide_path(r, from, to, GuideParams{}, walls).has_value());
+  const Polygon degenerate[] = {Polygon{{{1, 1}, {2, 2}}}};
+  EXPECT_THROW(guide_path(r, from, to, GuideParams{}, degenerate), Error);
+}
+
 TEST(GuidePath, ASegmentInSightIsOneLeg) {
   const Region r{rect(0, 0, 10, 10), {rect(4, 6, 6, 9)}};
   const auto path = guide_path(r, Point(1, 2), Point(9, 2), GuideParams{});

@@ -1,5 +1,5 @@
 // A corpus of past failures (docs/architecture.md, house style 9): random clutter instances of
-// the issue-7 comparison (scenario::random_instance with round_unknown = false, kept as files in
+// the baseline comparison (scenario::random_instance with round_unknown = false, kept as files in
 // tests/corpus/clutter) on which rearm used to end stuck. Two defects caused it, both fixed in
 // reactive/:
 //  - a released object whose dilated disk overlaps another obstacle merges with it into one
@@ -19,6 +19,13 @@
 // ended stuck because the pair's drop point fell back to the paper's target outside the pocket
 // visible unknown obstacles close, or because the law stalled with x* in sight; the drop
 // point's lower clearance levels and the straight track to x* (executive.h) complete them.
+// tests/corpus/recoveries holds more of that sweep's instances, completed by the robust
+// variant's memory of unknown obstacles for guide paths (the robot had been guided back into a
+// pocket of unknown obstacles it had left), the pair's looked-ahead back-up (a pair wedged
+// between a familiar and an unknown obstacle, backing up straight between them), objects named
+// by the grown check beside visible unknown obstacles (a gap the exact check finds open and the
+// mapped space closes), and the pair centre kept in F_k by turns and back-ups (a turn had swung
+// it 3 cm into a dilation, where the law's model point lies in a model obstacle).
 // Truth: the Box2D world's contact accounting and the simulator's object positions, located
 // exactly in the goal regions.
 #include <gtest/gtest.h>
@@ -38,10 +45,10 @@
 namespace rearm::experiment {
 namespace {
 
-// "DIR/NAME" for every scenario file of the four corpora.
+// "DIR/NAME" for every scenario file of the five corpora.
 std::vector<std::string> corpus() {
   std::vector<std::string> files;
-  for (const char* dir : {"clutter", "comparison", "variants", "pockets"}) {
+  for (const char* dir : {"clutter", "comparison", "variants", "pockets", "recoveries"}) {
     for (const auto& e : std::filesystem::directory_iterator(std::string("tests/corpus/") + dir)) {
       if (e.path().extension() == ".yaml") {
         files.push_back(std::string(dir) + "/" + e.path().stem().string());

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -105,6 +106,39 @@ TEST(SemanticMapTest, FragmentOfAWallSeenAndForgotten) {
   EXPECT_TRUE(map.unknown().empty());
   EXPECT_EQ(map.version(), 2u);
   EXPECT_FALSE(map.update(Point(25, -6)));
+}
+
+// What has been seen of an unknown obstacle (the robust variant's memory): the hull of every
+// fragment read, inside the true wall (convex), growing as the robot drives along it, kept after
+// the wall is out of range, and never bumping the version by itself.
+TEST(SemanticMapTest, SeenHullGrowsInsideTheObstacleAndIsKept) {
+  SemanticMap map(scene(), Sensor({.range = kR}));
+  ASSERT_EQ(map.seen().size(), 1u);
+  EXPECT_TRUE(map.seen()[0].vertices.empty());
+  const Polygon& wall = map.ground_truth().unknown[0].polygon;
+  double last_area = 0;
+  for (double x = 21; x <= 29; x += 1) {
+    map.update(Point(x, 0));
+    const Polygon& h = map.seen()[0];
+    ASSERT_GE(h.size(), 3u);
+    EXPECT_TRUE(is_convex_ccw(h));
+    for (const Point& v : h.vertices) EXPECT_LE(convex_excess(wall, v), 1e-9);
+    // The visible fragment lies in the hull.
+    for (const Point& v : map.unknown()[0].vertices) {
+      EXPECT_LE(convex_excess(h, v), kSeenGrowth + 1e-9);
+    }
+    EXPECT_GT(h.area(), last_area);
+    last_area = h.area();
+  }
+  // Every point of the wall was within R of a robot position (its far corners (20, 1.5) and
+  // (30, 1.5) are 1.80 m from (21, 0) and (29, 0); the footprints overlap along it): the hull
+  // is the whole wall.
+  EXPECT_NEAR(last_area, wall.area(), 1e-9);
+  const std::uint64_t v = map.version();
+  EXPECT_TRUE(map.update(Point(25, -5)));  // the fragment disappears: the version bumps for that
+  EXPECT_TRUE(map.unknown().empty());
+  EXPECT_EQ(map.version(), v + 1);
+  EXPECT_DOUBLE_EQ(map.seen()[0].area(), last_area);  // kept
 }
 
 TEST(SemanticMapTest, StandingStillNeverChangesTheMap) {
