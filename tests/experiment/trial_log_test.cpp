@@ -12,6 +12,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <system_error>
 
 #include "core/error.h"
 #include "experiment/csv.h"
@@ -22,13 +23,23 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path temp_dir(const std::string& name) {
-  const fs::path d =
-      fs::temp_directory_path() / ("rearm_trial_log_" + name + "_" + std::to_string(::getpid()));
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
+// A fresh directory under the system's temporary directory, removed with its contents when the
+// test ends (passed or not).
+struct TempDir {
+  fs::path path;
+  explicit TempDir(const std::string& name)
+      : path(fs::temp_directory_path() /
+             ("rearm_trial_log_" + name + "_" + std::to_string(::getpid()))) {
+    fs::remove_all(path);
+    fs::create_directories(path);
+  }
+  ~TempDir() {
+    std::error_code ec;
+    fs::remove_all(path, ec);
+  }
+  TempDir(const TempDir&) = delete;
+  TempDir& operator=(const TempDir&) = delete;
+};
 
 std::string slurp(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);
@@ -52,7 +63,8 @@ TrialRecord record(std::size_t index, const std::string& reason) {
 
 TEST(Csv, QuotedFieldsReadBackByPythonsCsvModule) {
   const std::vector<std::string> fields = {"plain", "a,b", "say \"hi\"", "", "line\nbreak"};
-  const fs::path d = temp_dir("python");
+  const TempDir dir("python");
+  const fs::path& d = dir.path;
   {
     std::ofstream out(d / "x.csv");
     out << csv_line(fields) << "\n";
@@ -70,7 +82,8 @@ TEST(Csv, QuotedFieldsReadBackByPythonsCsvModule) {
 }
 
 TEST(TrialLog, ANewFileGetsTheHeaderAndRowsAreDurableLines) {
-  const fs::path d = temp_dir("new");
+  const TempDir dir("new");
+  const fs::path& d = dir.path;
   const fs::path csv = d / "sub" / "trials.csv";
   {
     TrialLog log(csv.string());
@@ -89,7 +102,8 @@ TEST(TrialLog, ANewFileGetsTheHeaderAndRowsAreDurableLines) {
 }
 
 TEST(TrialLog, ACutLastLineIsDroppedAndItsTrialIsNotDone) {
-  const fs::path d = temp_dir("torn");
+  const TempDir dir("torn");
+  const fs::path& d = dir.path;
   const fs::path csv = d / "trials.csv";
   const std::string full = trial_row(record(7, "complete"));
   const std::string cut = trial_row(record(8, "cut"));
@@ -107,7 +121,8 @@ TEST(TrialLog, ACutLastLineIsDroppedAndItsTrialIsNotDone) {
 }
 
 TEST(TrialLog, DamageInTheMiddleAndAForeignHeaderAreRefused) {
-  const fs::path d = temp_dir("damaged");
+  const TempDir dir("damaged");
+  const fs::path& d = dir.path;
   {
     std::ofstream out(d / "mid.csv", std::ios::binary);
     out << trial_header() << "\n1,2,3\n" << trial_row(record(1, "x")) << "\n";
