@@ -9,7 +9,7 @@ PACKAGES=(
   # libraries (design card)
   libeigen3-dev libcgal-dev libgmp-dev libmpfr-dev libbox2d-dev libompl-dev
   libboost-filesystem-dev libboost-serialization-dev libboost-system-dev
-  libtbb-dev libbenchmark-dev libgtest-dev libgmock-dev libyaml-cpp-dev
+  libtbb-dev libbenchmark-dev libgtest-dev libgmock-dev libyaml-cpp-dev libmimalloc-dev
   # independent LTL translator used by the tests; plotting
   spin python3-matplotlib python3-pil
   # ompl_benchmark_statistics (the sweep's OMPL benchmark logs into SQLite, tested); the

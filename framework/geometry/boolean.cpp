@@ -16,6 +16,7 @@
 
 #include "core/error.h"
 #include "geometry/cgal_internal.h"
+#include "geometry/meeting.h"
 
 namespace rearm::geometry {
 namespace {
@@ -136,22 +137,68 @@ RegionSet intersect(const RegionSet& a, const RegionSet& b) {
   return from_set_exact(s);
 }
 
-RegionSet subtract(const RegionSet& a, const RegionSet& b) {
-  PolygonSet s = to_set_exact(normalized(a, "subtract", "first"));
-  s.difference(to_set_exact(normalized(b, "subtract", "second")));
+namespace {
+
+RegionSet sweep_difference(const RegionSet& normal_a, const RegionSet& normal_b) {
+  PolygonSet s = to_set_exact(normal_a);
+  s.difference(to_set_exact(normal_b));
   return from_set_exact(s);
 }
 
+}  // namespace
+
+// The obstacles of b that stand alone strictly inside a (meeting.h) become holes of the region
+// that holds them without entering the sweep; those outside a remove nothing. Only the rest
+// is swept. The set is the one the sweep of all of b gives (the decisions are exact).
+RegionSet subtract(const RegionSet& a, const RegionSet& b) {
+  const RegionSet na = normalized(a, "subtract", "first");
+  const RegionSet nb = normalized(b, "subtract", "second");
+  const std::vector<internal::Place> place = internal::place_in(na, nb);
+  RegionSet swept;
+  for (std::size_t i = 0; i < nb.size(); ++i) {
+    if (place[i] == internal::Place::kNeedsSweep) swept.push_back(nb[i]);
+  }
+  // Regions of a may overlap: the sweep unites them.
+  RegionSet out = swept.empty() && na.size() <= 1 ? na : sweep_difference(na, swept);
+  for (std::size_t i = 0; i < nb.size(); ++i) {
+    if (place[i] != internal::Place::kInside) continue;
+    const Point& probe = nb[i].outer.vertices.front();
+    auto holder = std::find_if(out.begin(), out.end(), [&](const Region& r) {
+      return contains(r.outer, probe) &&
+             std::none_of(r.holes.begin(), r.holes.end(),
+                          [&](const Polygon& h) { return contains(h, probe); });
+    });
+    if (holder == out.end()) return sweep_difference(na, nb);  // rounding moved a boundary
+    holder->holes.push_back(nb[i].outer);
+  }
+  return out;
+}
+
+// Clusters of meeting polygons are swept one by one; a polygon that meets no other is its own
+// union.
 RegionSet unite_all(const std::vector<Polygon>& polygons) {
-  std::vector<CPolygon> parts;
-  parts.reserve(polygons.size());
+  std::vector<Polygon> valid;
+  valid.reserve(polygons.size());
   for (std::size_t i = 0; i < polygons.size(); ++i) {
     const std::string name = "unite_all: polygon " + std::to_string(i);
-    parts.push_back(internal::to_cgal(validated(polygons[i], name.c_str())));
+    valid.push_back(validated(polygons[i], name.c_str()));
   }
-  PolygonSet s;
-  if (!parts.empty()) s.join(parts.begin(), parts.end());  // aggregated (divide and conquer)
-  return from_set_exact(s);
+  RegionSet out;
+  for (const std::vector<std::size_t>& cluster : internal::meeting_clusters(valid)) {
+    if (cluster.size() == 1) {
+      out.push_back(Region{valid[cluster.front()], {}});
+      continue;
+    }
+    std::vector<CPolygon> parts;
+    parts.reserve(cluster.size());
+    for (std::size_t i : cluster) parts.push_back(internal::to_cgal(valid[i]));
+    PolygonSet s;
+    s.join(parts.begin(), parts.end());  // aggregated (divide and conquer)
+    RegionSet united = from_set_exact(s);
+    out.insert(out.end(), std::make_move_iterator(united.begin()),
+               std::make_move_iterator(united.end()));
+  }
+  return out;
 }
 
 // Closed sets meet iff two boundary segments meet (exact predicate), or, with disjoint

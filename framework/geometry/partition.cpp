@@ -1,7 +1,10 @@
-// Convex decomposition with CGAL's partition package over the exact kernel
-// (docs/reactive.md §3.1). Both algorithms only insert diagonals between input vertices, so
-// every piece vertex is an input vertex, bit for bit: adjacent pieces share vertices
-// exactly, which the tree construction of §3.2 relies on.
+// Convex decomposition with CGAL's partition package (docs/reactive.md §3.1). Both algorithms
+// only insert diagonals between input vertices, so every piece vertex is an input vertex, bit
+// for bit: adjacent pieces share vertices exactly, which the tree construction of §3.2 relies
+// on. They construct no point (the visibility graph, the triangulation and the validity check
+// decide by orientation and ordering predicates), so the exact-predicates kernel over the
+// input doubles decides exactly what the exact-constructions kernel decided, without its lazy
+// number handles (the partition was 14% of an N = 8 trial's controller time with them).
 //
 // CGAL 5.5's optimal_convex_partition_2 depends on the start vertex: it can return
 // non-simple, non-convex pieces when vertex 0 is unsuitable (CGAL issue #9322, fixed
@@ -12,6 +15,7 @@
 // to approx_convex_partition_2 (Hertel–Mehlhorn, at most 4x optimal).
 #include "geometry/partition.h"
 
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Partition_traits_2.h>
 #include <CGAL/partition_2.h>
 
@@ -20,12 +24,11 @@
 #include <list>
 #include <utility>
 
-#include "geometry/cgal_internal.h"
-
 namespace rearm::geometry {
 namespace {
 
-using Traits = CGAL::Partition_traits_2<internal::Kernel>;
+using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Traits = CGAL::Partition_traits_2<Epick>;
 using TraitsPolygon = Traits::Polygon_2;
 
 }  // namespace
@@ -39,7 +42,7 @@ std::vector<Polygon> convex_partition(const Polygon& p) {
               std::min_element(ccw.vertices.begin(), ccw.vertices.end(), lex_less),
               ccw.vertices.end());
   TraitsPolygon input;
-  for (const Point& v : ccw.vertices) input.push_back(internal::to_cgal(v));
+  for (const Point& v : ccw.vertices) input.push_back(Epick::Point_2(v.x(), v.y()));
 
   std::list<TraitsPolygon> pieces;
   const Traits traits;
@@ -62,7 +65,7 @@ std::vector<Polygon> convex_partition(const Polygon& p) {
     Polygon q;
     q.vertices.reserve(piece.size());
     for (auto it = piece.vertices_begin(); it != piece.vertices_end(); ++it) {
-      q.vertices.push_back(internal::from_cgal(*it));
+      q.vertices.emplace_back(it->x(), it->y());
     }
     if (q.signed_area() < 0) std::reverse(q.vertices.begin(), q.vertices.end());
     if (q.area() < kSliverArea) continue;

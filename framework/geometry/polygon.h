@@ -48,4 +48,8 @@ bool contains(const RegionSet& s, const Point& x);
 
 double total_area(const RegionSet& s);
 
+// The turn a → b → c, exact (predicates on the doubles): +1 left (counter-clockwise), −1
+// right, 0 collinear. Points must be finite (not checked).
+int orientation(const Point& a, const Point& b, const Point& c);
+
 }  // namespace rearm::geometry

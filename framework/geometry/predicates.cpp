@@ -132,4 +132,9 @@ bool contains(const RegionSet& s, const Point& x) {
   return false;
 }
 
+int orientation(const Point& a, const Point& b, const Point& c) {
+  return static_cast<int>(
+      CGAL::orientation(EPoint(a.x(), a.y()), EPoint(b.x(), b.y()), EPoint(c.x(), c.y())));
+}
+
 }  // namespace rearm::geometry

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
 
 #include "core/error.h"
@@ -243,10 +244,53 @@ void add_clusters(MappedSpace& m, const Dilated& d, const SemanticInput& in, dou
   }
 }
 
+// Indices in `outer` of the hull's vertices, in the hull's order, when every hull vertex is a
+// vertex of outer and they come in the same cyclic order.
+std::optional<std::vector<std::size_t>> hull_indices(const Polygon& hull, const Polygon& outer) {
+  const std::size_t n = outer.size();
+  std::vector<std::size_t> at;
+  std::size_t travelled = 0;
+  for (const Point& v : hull.vertices) {
+    const auto it = std::find(outer.vertices.begin(), outer.vertices.end(), v);
+    if (it == outer.vertices.end()) return std::nullopt;
+    at.push_back(static_cast<std::size_t>(it - outer.vertices.begin()));
+    if (at.size() > 1) travelled += (at.back() + n - at[at.size() - 2]) % n;
+  }
+  if (at.size() < 3 || travelled + (at.front() + n - at.back()) % n != n) return std::nullopt;
+  return at;
+}
+
+// The pockets of conv(outer) − outer without the Boolean sweep (exact predicates only): the
+// chain of outer between two consecutive hull vertices, closed by the hull edge joining them
+// (its lid), counter-clockwise. nullopt when a chain vertex is not strictly inside its lid's
+// side (collinear vertices pinch the pocket, and an inexact hull may leave a vertex outside):
+// the caller then sweeps.
+std::optional<RegionSet> chain_pockets(const Polygon& hull, const Polygon& outer) {
+  const auto at = hull_indices(hull, outer);
+  if (!at) return std::nullopt;
+  const std::size_t n = outer.size(), m = hull.size();
+  RegionSet out;
+  for (std::size_t k = 0; k < m; ++k) {
+    const Point& a = hull.vertices[k];
+    const Point& b = hull.vertices[(k + 1) % m];
+    const std::size_t from = (*at)[k], to = (*at)[(k + 1) % m];
+    if ((from + 1) % n == to) continue;  // the hull edge is an edge of outer
+    Polygon pocket{{a, b}};
+    for (std::size_t j = (to + n - 1) % n; j != from; j = (j + n - 1) % n) {
+      if (geometry::orientation(a, b, outer.vertices[j]) <= 0) return std::nullopt;
+      pocket.vertices.push_back(outer.vertices[j]);
+    }
+    out.push_back(Region{std::move(pocket), {}});
+  }
+  return out;
+}
+
 // Pockets between F_k and ∂F_e, each merged into the boundary through its lid.
 void add_pockets(MappedSpace& m, const Dilated& d, double scale, double sliver) {
-  const RegionSet pockets =
-      geometry::subtract(geometry::to_set(m.enclosing), geometry::to_set(m.freespace.outer));
+  std::optional<RegionSet> chained = chain_pockets(m.enclosing, m.freespace.outer);
+  const RegionSet pockets = chained ? std::move(*chained)
+                                    : geometry::subtract(geometry::to_set(m.enclosing),
+                                                         geometry::to_set(m.freespace.outer));
   for (const Region& r : pockets) {
     if (r.outer.area() <= sliver) continue;
     Polygon pocket = drop_flat_vertices(r.outer);

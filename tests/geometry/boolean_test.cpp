@@ -169,6 +169,93 @@ TEST(BooleanTest, RandomUniteAllMatchesMembership) {
   }
 }
 
+// Many small shapes scattered over a room with a pillar (a hole): most stand alone inside it
+// (subtract adds them as holes and unite_all passes them through without the sweep), some
+// cross the walls or the pillar, overlap or touch each other, or lie outside. Membership by the
+// ray-casting oracle and the area identity area(a − ∪b) = area(a) − area(a ∩ ∪b) decide.
+TEST(BooleanTest, ScatteredObstaclesInARoomMatchMembershipAndArea) {
+  Rng rng(0x5ca77e4);
+  const Polygon room = square(-5, -5, 10), pillar = square(0.5, 0.5, 1.5);
+  const RegionSet a{Region{room, {pillar}}};
+  std::size_t holes = 0;
+  int samples = 0;
+  for (int trial = 0; trial < 25; ++trial) {
+    SCOPED_TRACE("trial " + std::to_string(trial));
+    std::vector<Polygon> obstacles;
+    const int n = 4 + static_cast<int>(rng.index(20));
+    for (int k = 0; k < n; ++k) {
+      const Point c(rng.uniform(-6, 6), rng.uniform(-6, 6));
+      obstacles.push_back(
+          rng.bernoulli(0.3)
+              ? rect(c.x(), c.y(), c.x() + rng.uniform(0.2, 1.5), c.y() + rng.uniform(0.2, 1.5))
+              : random_star(rng, 3 + static_cast<int>(rng.index(30)), 0.2, 0.9, c, 0.0, 0.5));
+    }
+    if (trial % 5 == 0) {  // two squares touching at a corner, alone otherwise
+      obstacles.push_back(square(-4, 3, 0.5));
+      obstacles.push_back(square(-3.5, 3.5, 0.5));
+    }
+    const RegionSet u = unite_all(obstacles);
+    const RegionSet d = subtract(a, u);
+    expect_counter_clockwise(u);
+    expect_counter_clockwise(d);
+    holes += total_holes(d);
+    const double cut = total_area(intersect(a, u));
+    EXPECT_NEAR(total_area(d), total_area(a) - cut, kAreaRelTol * total_area(a));
+    for (const Region& r : d) {
+      EXPECT_NO_THROW(validated(r.outer));
+      for (const Polygon& h : r.holes) EXPECT_NO_THROW(validated(h));
+    }
+    std::vector<Polygon> inputs = obstacles;
+    inputs.push_back(room);
+    inputs.push_back(pillar);
+    for (int k = 0; k < kSamplesPerCase; ++k) {
+      const Point x(rng.uniform(-6.5, 6.5), rng.uniform(-6.5, 6.5));
+      if (near_any_edge(inputs, x)) continue;
+      bool in_any = false;
+      for (const Polygon& p : obstacles) in_any = in_any || ray_cast_inside(p, x);
+      const bool in_a = ray_cast_inside(room, x) && !ray_cast_inside(pillar, x);
+      ASSERT_EQ(contains(u, x), in_any) << x.transpose();
+      ASSERT_EQ(contains(d, x), in_a && !in_any) << x.transpose();
+      ++samples;
+    }
+  }
+  EXPECT_GT(holes, 100u);  // the pillar and the obstacles standing alone inside
+  EXPECT_GT(samples, 25 * 200);
+}
+
+// An obstacle strictly inside becomes a hole; outside, it removes nothing; one inside a hole
+// of a, or holding a region of a, or touching another obstacle goes through the sweep.
+TEST(BooleanTest, SubtractPlacesObstaclesExactly) {
+  const RegionSet ring = subtract(to_set(square(0, 0, 10)), to_set(square(4, 4, 2)));
+  const RegionSet inner = subtract(ring, RegionSet{Region{square(1, 1, 1), {}}});
+  ASSERT_EQ(inner.size(), 1u);
+  EXPECT_EQ(inner[0].holes.size(), 2u);
+  EXPECT_NEAR(total_area(inner), 100.0 - 4 - 1, kTol);
+  const RegionSet outside = subtract(ring, to_set(square(20, 20, 1)));
+  EXPECT_NEAR(total_area(outside), 96.0, kTol);
+  const RegionSet in_hole = subtract(ring, to_set(square(4.5, 4.5, 1)));
+  EXPECT_NEAR(total_area(in_hole), 96.0, kTol);
+  EXPECT_EQ(in_hole[0].holes.size(), 1u);
+  EXPECT_TRUE(subtract(to_set(square(1, 1, 1)), to_set(square(0, 0, 4))).empty());
+  // One ulp from the wall: still strictly inside, a hole.
+  const double ulp = std::nextafter(0.0, 1.0);
+  const RegionSet near_wall = subtract(to_set(square(0, 0, 10)), to_set(square(ulp, 1, 1)));
+  ASSERT_EQ(near_wall.size(), 1u);
+  EXPECT_EQ(near_wall[0].holes.size(), 1u);
+  // On the wall: the boundary changes (an L-shaped notch, no hole).
+  const RegionSet on_wall = subtract(to_set(square(0, 0, 10)), to_set(square(0, 1, 1)));
+  ASSERT_EQ(on_wall.size(), 1u);
+  EXPECT_EQ(on_wall[0].holes.size(), 0u);
+  EXPECT_NEAR(total_area(on_wall), 99.0, kTol);
+  // Obstacles given as overlapping regions of b are united by the sweep.
+  const RegionSet overlapping =
+      subtract(to_set(square(0, 0, 10)),
+               RegionSet{Region{square(1, 1, 2), {}}, Region{square(2, 2, 2), {}}});
+  ASSERT_EQ(overlapping.size(), 1u);
+  EXPECT_EQ(overlapping[0].holes.size(), 1u);
+  EXPECT_NEAR(total_area(overlapping), 100.0 - 7, kTol);
+}
+
 TEST(BooleanTest, OverlappingSquares) {
   const RegionSet a = to_set(square(0, 0, 2)), b = to_set(square(1, 1, 2));
   const RegionSet u = unite(a, b);
