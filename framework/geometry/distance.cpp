@@ -18,6 +18,23 @@ void check_finite(const Point& x, const char* what) {
   }
 }
 
+// Slack of the bounding-box skip of disk_clearance (m).
+constexpr double kBoxSkipMargin = 1e-9;
+
+// Euclidean distance from x to the polygon's axis-aligned bounding box (0 inside it).
+double box_distance(const Polygon& p, const Point& x) {
+  double x0 = p.vertices.front().x(), x1 = x0, y0 = p.vertices.front().y(), y1 = y0;
+  for (const Point& v : p.vertices) {
+    x0 = std::min(x0, v.x());
+    x1 = std::max(x1, v.x());
+    y0 = std::min(y0, v.y());
+    y1 = std::max(y1, v.y());
+  }
+  const double dx = std::max({x0 - x.x(), 0.0, x.x() - x1});
+  const double dy = std::max({y0 - x.y(), 0.0, x.y() - y1});
+  return std::hypot(dx, dy);
+}
+
 }  // namespace
 
 Point nearest_on_segment(const Point& a, const Point& b, const Point& x) {
@@ -63,11 +80,18 @@ double signed_distance(const Polygon& p, const Point& x) {
   return contains(p, x) ? -d : d;
 }
 
+// An obstacle whose bounding box lies farther from the centre than the clearance found so far
+// (by kBoxSkipMargin, which covers the rounding of either distance) cannot lower it: the
+// centre is then outside the obstacle, at least the box distance away. The result is the same
+// double as without the skip.
 double disk_clearance(const Polygon& workspace, const std::vector<Polygon>& obstacles,
                       const std::vector<Disk>& objects, const Point& center, double radius,
                       std::optional<std::size_t> skip) {
   double best = -signed_distance(workspace, center) - radius;
-  for (const Polygon& o : obstacles) best = std::min(best, signed_distance(o, center) - radius);
+  for (const Polygon& o : obstacles) {
+    if (!o.vertices.empty() && box_distance(o, center) - radius > best + kBoxSkipMargin) continue;
+    best = std::min(best, signed_distance(o, center) - radius);
+  }
   for (std::size_t i = 0; i < objects.size(); ++i) {
     if (skip && *skip == i) continue;
     best = std::min(best, (objects[i].center - center).norm() - objects[i].radius - radius);

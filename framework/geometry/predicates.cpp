@@ -52,10 +52,32 @@ void demand_finite(const Polygon& p, const char* what) {
   }
 }
 
-// Exact location of x relative to p (orientation-independent).
+int orient(const Point& a, const Point& b, const Point& c) {
+  return static_cast<int>(
+      CGAL::orientation(EPoint(a.x(), a.y()), EPoint(b.x(), b.y()), EPoint(c.x(), c.y())));
+}
+
+// Exact location of x relative to p (orientation-independent): on an edge when collinear with
+// it and inside its box; otherwise by the winding number, whose crossings are decided by the
+// exact orientation of x against each edge that spans x's height (such an edge cannot be
+// collinear with x without containing it). No allocation: this runs on every control tick.
 CGAL::Bounded_side locate(const Polygon& p, const Point& x) {
-  const std::vector<EPoint> pts = to_epick(p);
-  return CGAL::bounded_side_2(pts.begin(), pts.end(), EPoint(x.x(), x.y()), Epick());
+  int winding = 0;
+  for (std::size_t i = 0, n = p.size(); i < n; ++i) {
+    const Point& a = p.vertices[i];
+    const Point& b = p.vertices[(i + 1) % n];
+    if (std::min(a.x(), b.x()) <= x.x() && x.x() <= std::max(a.x(), b.x()) &&
+        std::min(a.y(), b.y()) <= x.y() && x.y() <= std::max(a.y(), b.y()) &&
+        orient(a, b, x) == 0) {
+      return CGAL::ON_BOUNDARY;
+    }
+    if (a.y() <= x.y()) {
+      if (b.y() > x.y() && orient(a, b, x) > 0) ++winding;
+    } else if (b.y() <= x.y() && orient(a, b, x) < 0) {
+      --winding;
+    }
+  }
+  return winding != 0 ? CGAL::ON_BOUNDED_SIDE : CGAL::ON_UNBOUNDED_SIDE;
 }
 
 void check_query(const Point& x) {
