@@ -29,6 +29,12 @@ class ScenarioError : public Error {
   std::string source_, key_, reason_;
 };
 
+// Every coordinate (m) lies in [−kMaxCoordinate, kMaxCoordinate] and every length (radii, the
+// sensor range) in (0, kMaxLength]: beyond, the rounding of doubles swamps the geometry's
+// tolerances (1e-9 m), and 1e308 overflows it.
+inline constexpr double kMaxCoordinate = 1e4;
+inline constexpr double kMaxLength = 1e4;
+
 // Reads and validates a scenario file. Throws ScenarioError for a missing or unreadable file,
 // malformed YAML (with its line), a missing required key, an unknown key, a value of the wrong
 // type, and everything validate() rejects.
@@ -37,7 +43,8 @@ Scenario load_scenario(const std::string& path);
 Scenario parse_scenario(const std::string& yaml, const std::string& source = "<string>");
 
 // Checks a scenario built in code (load_scenario calls it too); throws ScenarioError naming the
-// key: non-finite numbers anywhere; non-positive radii, ranges, limits, dt, budget; invalid or
+// key: non-finite numbers anywhere; coordinates and lengths beyond kMaxCoordinate and kMaxLength;
+// non-positive radii, ranges, limits, dt, budget; invalid or
 // self-intersecting polygons (geometry::validated); non-convex unknown obstacles; empty or
 // duplicate names (one namespace for regions, objects and obstacles); a region not inside the
 // workspace; objects overlapping each other, an obstacle or the workspace boundary; the robot's

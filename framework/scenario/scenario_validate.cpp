@@ -119,10 +119,25 @@ class Validator {
     if (!(std::isfinite(p.x()) && std::isfinite(p.y()))) {
       fail(key, "must be a finite point, got " + show(p));
     }
+    if (!(std::abs(p.x()) <= kMaxCoordinate && std::abs(p.y()) <= kMaxCoordinate)) {
+      fail(key, "coordinates must lie within ±" + num(kMaxCoordinate) + " m, got " + show(p));
+    }
   }
 
-  // Finite, simple, non-degenerate (geometry::validated) and stored counter-clockwise.
+  void length(double x, const std::string& key) const {
+    positive(x, key);
+    if (!(x <= kMaxLength)) fail(key, "must be at most " + num(kMaxLength) + " m, got " + num(x));
+  }
+
+  // Finite, within the coordinate bound, simple, non-degenerate (geometry::validated) and stored
+  // counter-clockwise.
   void polygon(const geometry::Polygon& p, const std::string& key) const {
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      const geometry::Point& v = p.vertices[i];
+      if (std::isfinite(v.x()) && std::isfinite(v.y())) {
+        finite(v, key + "[" + std::to_string(i) + "]");
+      }
+    }
     geometry::Polygon ccw;
     try {
       ccw = geometry::validated(p, key.c_str());
@@ -163,18 +178,18 @@ class Validator {
 
   void robot() const {
     const Robot& r = s_.robot;
-    positive(r.radius, "robot.radius");
+    length(r.radius, "robot.radius");
     finite(r.start, "robot.start");
     finite(r.heading, "robot.heading");
     positive(r.v_max, "robot.v_max");
     positive(r.omega_max, "robot.omega_max");
-    positive(r.sensor_range, "robot.sensor_range");
+    length(r.sensor_range, "robot.sensor_range");
   }
 
   void object(std::size_t i) const {
     const Object& o = s_.objects[i];
     finite(o.disk.center, item("objects", i) + ".center");
-    positive(o.disk.radius, item("objects", i) + ".radius");
+    length(o.disk.radius, item("objects", i) + ".radius");
   }
 
   // One namespace for regions, objects and obstacles: the task names regions and objects, and

@@ -44,6 +44,13 @@ inline std::string quoted(const std::string& text) {
   return "'" + text.substr(0, kMaxQuoted) + "...'";
 }
 
+// The shortest decimal that reads back to x.
+inline std::string quoted_number(double x) {
+  char buf[64];
+  const auto [end, ec] = std::to_chars(buf, buf + sizeof buf, x);
+  return ec == std::errc() ? std::string(buf, end) : std::to_string(x);
+}
+
 // What a node is, for "expected X, got Y" messages.
 inline std::string describe(const YAML::Node& n) {
   switch (n.Type()) {
@@ -162,7 +169,12 @@ class Reader {
     if (!n.IsSequence() || n.size() != 2) {
       fail(path, "expected a point [x, y], got " + describe(n));
     }
-    return geometry::Point(number(n[0], path + "[0]"), number(n[1], path + "[1]"));
+    const geometry::Point p(number(n[0], path + "[0]"), number(n[1], path + "[1]"));
+    if (!(std::abs(p.x()) <= kMaxCoordinate && std::abs(p.y()) <= kMaxCoordinate)) {
+      fail(path, "coordinates must lie within ±" + quoted_number(kMaxCoordinate) + " m, got (" +
+                     quoted_number(p.x()) + ", " + quoted_number(p.y()) + ")");
+    }
+    return p;
   }
 
   // A polygon given as a list of [x, y] vertices in either orientation, returned

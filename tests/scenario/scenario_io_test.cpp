@@ -634,6 +634,30 @@ TEST(ScenarioErrors, NegativeRadius) {
                "must be finite and > 0, got -3");
 }
 
+// Coordinates and lengths beyond the documented bounds (1e308 used to overflow the geometry
+// and crash `rearm run`) are rejected with the key; the bounds themselves are accepted.
+TEST(ScenarioErrors, HugeCoordinatesAndLengths) {
+  expect_error(
+      edited("[[0, 0], [10, 0], [10, 6], [0, 6]]", "[[0, 0], [1e308, 0], [10, 6], [0, 6]]"),
+      "workspace[1]", "coordinates must lie within ±10000 m, got (1e+308, 0)");
+  expect_error(edited("[[8, 2], [9, 2], [9, 3], [8, 3]]", "[[8, 2], [9, 2], [9, -2e4], [8, 3]]"),
+               "regions[0].polygon[2]", "coordinates must lie within");
+  expect_error(edited("center: [5, 3]", "center: [-1e5, 3]"), "objects[0].center",
+               "coordinates must lie within");
+  expect_error(edited("start: [1, 1]}", "start: [1, 1e300]}"), "robot.start",
+               "coordinates must lie within");
+  expect_error(edited("[[3, 4], [4, 4], [4, 5], [3, 5]]", "[[3, 4], [4, 4], [4, 5e5], [3, 5]]"),
+               "familiar[0].polygon[2]", "coordinates must lie within");
+  expect_error(edited("radius: 0.25}\n  - {name: M2", "radius: 2e4}\n  - {name: M2"),
+               "objects[0].radius", "must be at most 10000 m, got 20000");
+  expect_error(edited("start: [1, 1]}", "start: [1, 1], sensor_range: 1e300}"),
+               "robot.sensor_range", "must be at most 10000 m");
+  // At the bounds: a 10 km room is valid.
+  EXPECT_NO_THROW(parse_scenario(edited("[[0, 0], [10, 0], [10, 6], [0, 6]]",
+                                        "[[-1e4, -1e4], [1e4, -1e4], [1e4, 1e4], [-1e4, 1e4]]"),
+                                 "t.yaml"));
+}
+
 TEST(ScenarioErrors, RegionOutsideWorkspace) {
   expect_error(
       edited("[[8, 2], [9, 2], [9, 3], [8, 3]]", "[[9.5, 2], [10.5, 2], [10.5, 3], [9.5, 3]]"),
