@@ -120,6 +120,15 @@ class Clock {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start_)
         .count();
   }
+  // The time budget alone, inside loops whose single pass can outlast it (the dominance test of
+  // a state with 2^n transitions); the clock is read every 64 polls.
+  void poll(const char* stage) {
+    if ((++polls_ & 63u) == 0 && ms() > options_.max_seconds * 1000.0) {
+      throw BudgetExceeded(std::string("ltl translation: ") + stage +
+                           " exceeds the time budget of " + std::to_string(options_.max_seconds) +
+                           " s");
+    }
+  }
   void check(const char* stage, std::size_t states) {
     if (states > options_.max_states) {
       throw BudgetExceeded(std::string("ltl translation: ") + stage + " exceeds the budget of " +
@@ -136,6 +145,7 @@ class Clock {
   std::chrono::steady_clock::time_point start_;
   const TranslateOptions& options_;
   std::uint32_t ticks_ = 0;
+  std::uint32_t polls_ = 0;
 };
 
 template <class A>
@@ -150,7 +160,7 @@ struct Trans {
 // guard, a smaller successor set and at least its marks) and or-s the guards of
 // transitions with equal successors and marks.
 template <class A>
-void simplify_transitions(const A& alpha, std::vector<Trans<A>>& ts) {
+void simplify_transitions(const A& alpha, std::vector<Trans<A>>& ts, Clock& clock) {
   if (ts.size() < 2) return;
   // Merge equal (succ, marks): sort by a key, or adjacent equals.
   auto less = [](const Trans<A>& a, const Trans<A>& b) {
@@ -176,6 +186,7 @@ void simplify_transitions(const A& alpha, std::vector<Trans<A>>& ts) {
   });
   std::vector<char> dead(ts.size(), 0);
   for (std::size_t i = 0; i < ts.size(); ++i) {
+    clock.poll("simplifying the transitions");
     const Trans<A>& a = ts[i];  // candidate to drop
     for (std::size_t j = 0; j < ts.size() && ts[j].succ.size() <= a.succ.size(); ++j) {
       if (i == j || dead[j]) continue;
@@ -221,7 +232,7 @@ void add_transition(const A& alpha, std::vector<Trans<A>>& ts, Trans<A> t) {
 
 template <class A>
 std::vector<Trans<A>> product(const A& alpha, const std::vector<Trans<A>>& x,
-                              const std::vector<Trans<A>>& y) {
+                              const std::vector<Trans<A>>& y, Clock& clock) {
   if (x.size() == 1 && x[0].succ.empty() && x[0].marks.w.empty() &&
       alpha.implies(alpha.top(), x[0].guard)) {
     return y;  // (t, {}) is the unit of the product; y is already simplified
@@ -229,6 +240,7 @@ std::vector<Trans<A>> product(const A& alpha, const std::vector<Trans<A>>& x,
   std::vector<Trans<A>> out;
   out.reserve(x.size() * y.size());
   for (const Trans<A>& a : x) {
+    clock.poll("the transition product");
     for (const Trans<A>& b : y) {
       auto g = alpha.conj(a.guard, b.guard);
       if (alpha.is_false(g)) continue;
@@ -237,7 +249,7 @@ std::vector<Trans<A>> product(const A& alpha, const std::vector<Trans<A>>& x,
       out.push_back(std::move(t));
     }
   }
-  simplify_transitions(alpha, out);
+  simplify_transitions(alpha, out, clock);
   return out;
 }
 
@@ -295,7 +307,7 @@ class Vwaa {
         ts.push_back(std::move(u));
       }
       ts.push_back(Trans<A>{alpha_.top(), StateSet{s}, {}, signature(StateSet{s})});
-      simplify_transitions(alpha_, ts);
+      simplify_transitions(alpha_, ts, clock_);
     } else {
       // δ(f) is simplified; marking the transitions that leave f cannot make one dominate
       // another (a dominator already had a smaller successor set, so it leaves f if the
@@ -381,13 +393,13 @@ class Vwaa {
         break;
       case Op::And:
         ts = delta(c[0]);
-        for (std::size_t i = 1; i < c.size(); ++i) ts = product(alpha_, ts, delta(c[i]));
+        for (std::size_t i = 1; i < c.size(); ++i) ts = product(alpha_, ts, delta(c[i]), clock_);
         break;
       case Op::Or:
         for (const Formula& x : c) {
           for (const Trans<A>& t : delta(x)) ts.push_back(t);
         }
-        simplify_transitions(alpha_, ts);
+        simplify_transitions(alpha_, ts, clock_);
         break;
       case Op::Next:
         for (StateSet& s : dnf(c[0])) ts.push_back(make(alpha_.top(), std::move(s)));
@@ -400,7 +412,7 @@ class Vwaa {
           t.sig = signature(t.succ);
           ts.push_back(std::move(t));
         }
-        simplify_transitions(alpha_, ts);
+        simplify_transitions(alpha_, ts, clock_);
         break;
       }
       case Op::Eventually: {  // δ(a) ∪ {(t, {F a})}
@@ -413,7 +425,7 @@ class Vwaa {
         const std::uint32_t self = state(f);
         std::vector<Trans<A>> right = delta(c[0]);
         right.push_back(make(alpha_.top(), StateSet{self}));
-        ts = product(alpha_, delta(c[1]), right);
+        ts = product(alpha_, delta(c[1]), right, clock_);
         break;
       }
       case Op::Always: {  // δ(a) ⊗ {(t, {G a})}; for G F a see transitions()
@@ -422,7 +434,7 @@ class Vwaa {
           ts.push_back(make(alpha_.top(), StateSet{self}));  // GF a == X GF a
         } else {
           ts = product(alpha_, delta(c[0]),
-                       std::vector<Trans<A>>{make(alpha_.top(), StateSet{self})});
+                       std::vector<Trans<A>>{make(alpha_.top(), StateSet{self})}, clock_);
         }
         break;
       }
@@ -487,7 +499,7 @@ Tgba<A> build_tgba(A& alpha, Vwaa<A>& vwaa, const Formula& f, Clock& clock) {
   for (std::size_t i = 0; i < sets.size(); ++i) {
     const StateSet e = sets[i];
     std::vector<Trans<A>> ts{Trans<A>{alpha.top(), {}, {}, 0}};
-    for (std::uint32_t s : e) ts = product(alpha, ts, vwaa.transitions(s));
+    for (std::uint32_t s : e) ts = product(alpha, ts, vwaa.transitions(s), clock);
     // The number of acceptance sets is known once every reachable state has been seen;
     // marks of sets whose owner is absent from e are added after the exploration.
     for (Trans<A>& t : ts) {

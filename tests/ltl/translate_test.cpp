@@ -37,6 +37,17 @@ TEST(TranslateTest, TimeBudgetGivesACleanError) {
   TranslateOptions o;
   o.max_seconds = 1e-6;
   EXPECT_THROW(translate_general(parse(conj_of("F", 12)), o), BudgetExceeded);
+  // F p1 & ... & F p40: its first generalized state has 2^40 transitions, so the budget has to
+  // be read inside the transition product and the dominance test (it once ran for minutes
+  // past a 60 s budget). The state budget is out of the way; the time budget ends it.
+  o.max_states = std::size_t{1} << 40;
+  o.max_seconds = 0.2;
+  try {
+    translate_general(parse(conj_of("F", 40)), o);
+    FAIL() << "expected BudgetExceeded";
+  } catch (const BudgetExceeded& e) {
+    EXPECT_NE(std::string(e.what()).find("time budget"), std::string::npos) << e.what();
+  }
 }
 
 TEST(TranslateTest, ActionAlphabetHasOneLetterPerPropositionPlusNone) {
