@@ -106,17 +106,18 @@ RegionSet from_set_exact(const PolygonSet& s) {
   return out;
 }
 
-std::vector<Kernel::Segment_2> boundary_segments(const RegionSet& s) {
-  std::vector<Kernel::Segment_2> out;
-  auto add = [&out](const Polygon& p) {
-    for (std::size_t i = 0, n = p.size(); i < n; ++i) {
-      out.emplace_back(internal::to_cgal(p.vertices[i]),
-                       internal::to_cgal(p.vertices[(i + 1) % n]));
-    }
-  };
+RegionSet sweep_difference(const RegionSet& normal_a, const RegionSet& normal_b) {
+  PolygonSet s = to_set_exact(normal_a);
+  s.difference(to_set_exact(normal_b));
+  return from_set_exact(s);
+}
+
+// Every boundary loop of the regions, outer and holes.
+std::vector<const Polygon*> loops_of(const RegionSet& s) {
+  std::vector<const Polygon*> out;
   for (const Region& r : s) {
-    add(r.outer);
-    for (const Polygon& h : r.holes) add(h);
+    out.push_back(&r.outer);
+    for (const Polygon& h : r.holes) out.push_back(&h);
   }
   return out;
 }
@@ -136,16 +137,6 @@ RegionSet intersect(const RegionSet& a, const RegionSet& b) {
   s.intersection(to_set_exact(normalized(b, "intersect", "second")));
   return from_set_exact(s);
 }
-
-namespace {
-
-RegionSet sweep_difference(const RegionSet& normal_a, const RegionSet& normal_b) {
-  PolygonSet s = to_set_exact(normal_a);
-  s.difference(to_set_exact(normal_b));
-  return from_set_exact(s);
-}
-
-}  // namespace
 
 // The obstacles of b that stand alone strictly inside a (meeting.h) become holes of the region
 // that holds them without entering the sweep; those outside a remove nothing. Only the rest
@@ -201,21 +192,15 @@ RegionSet unite_all(const std::vector<Polygon>& polygons) {
   return out;
 }
 
-// Closed sets meet iff two boundary segments meet (exact predicate), or, with disjoint
-// boundaries, a region of one set lies wholly inside the other, which one outer vertex of
-// that region decides. O(n m) segment tests with a bounding-box filter.
+// Closed sets meet iff two boundary segments meet (exact predicate, meeting.h), or, with
+// disjoint boundaries, a region of one set lies wholly inside the other, which one outer vertex
+// of that region decides.
 bool intersects(const RegionSet& a, const RegionSet& b) {
   const RegionSet na = normalized(a, "intersects", "first");
   const RegionSet nb = normalized(b, "intersects", "second");
-  const std::vector<Kernel::Segment_2> sa = boundary_segments(na);
-  const std::vector<Kernel::Segment_2> sb = boundary_segments(nb);
-  std::vector<CGAL::Bbox_2> boxes_b;
-  boxes_b.reserve(sb.size());
-  for (const auto& s : sb) boxes_b.push_back(s.bbox());
-  for (const auto& s : sa) {
-    const CGAL::Bbox_2 box = s.bbox();
-    for (std::size_t j = 0; j < sb.size(); ++j) {
-      if (CGAL::do_overlap(box, boxes_b[j]) && CGAL::do_intersect(s, sb[j])) return true;
+  for (const Polygon* x : loops_of(na)) {
+    for (const Polygon* y : loops_of(nb)) {
+      if (internal::boundaries_meet(*x, *y)) return true;
     }
   }
   for (const Region& r : na) {

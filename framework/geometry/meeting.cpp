@@ -92,7 +92,9 @@ Place place_alone(const Region& r, const Box& box, const RegionSet& a,
 
 }  // namespace
 
-bool polygons_meet(const Polygon& a, const Polygon& b) { return meet(a, box_of(a), b, box_of(b)); }
+bool boundaries_meet(const Polygon& a, const Polygon& b) {
+  return boundaries_meet(a, b, box_of(b));
+}
 
 std::vector<std::vector<std::size_t>> meeting_clusters(const std::vector<Polygon>& polygons) {
   const std::size_t n = polygons.size();

@@ -14,10 +14,11 @@
 
 namespace rearm::geometry::internal {
 
-// Do the closed polygons meet (touch or overlap)? Exact; bounding boxes filter the edge pairs.
-bool polygons_meet(const Polygon& a, const Polygon& b);
+// Does an edge of a meet an edge of b (closed segments)? Exact; bounding boxes filter the pairs.
+bool boundaries_meet(const Polygon& a, const Polygon& b);
 
-// The polygons grouped by the transitive closure of polygons_meet: each cluster lists its
+// The polygons grouped by the transitive closure of "the closed polygons meet" (their
+// boundaries meet or one contains the other): each cluster lists its
 // members' indices in increasing order, clusters ordered by their first member.
 std::vector<std::vector<std::size_t>> meeting_clusters(const std::vector<Polygon>& polygons);
 

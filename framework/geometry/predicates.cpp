@@ -52,11 +52,6 @@ void demand_finite(const Polygon& p, const char* what) {
   }
 }
 
-int orient(const Point& a, const Point& b, const Point& c) {
-  return static_cast<int>(
-      CGAL::orientation(EPoint(a.x(), a.y()), EPoint(b.x(), b.y()), EPoint(c.x(), c.y())));
-}
-
 // Exact location of x relative to p (orientation-independent): on an edge when collinear with
 // it and inside its box; otherwise by the winding number, whose crossings are decided by the
 // exact orientation of x against each edge that spans x's height (such an edge cannot be
@@ -68,12 +63,12 @@ CGAL::Bounded_side locate(const Polygon& p, const Point& x) {
     const Point& b = p.vertices[(i + 1) % n];
     if (std::min(a.x(), b.x()) <= x.x() && x.x() <= std::max(a.x(), b.x()) &&
         std::min(a.y(), b.y()) <= x.y() && x.y() <= std::max(a.y(), b.y()) &&
-        orient(a, b, x) == 0) {
+        orientation(a, b, x) == 0) {
       return CGAL::ON_BOUNDARY;
     }
     if (a.y() <= x.y()) {
-      if (b.y() > x.y() && orient(a, b, x) > 0) ++winding;
-    } else if (b.y() <= x.y() && orient(a, b, x) < 0) {
+      if (b.y() > x.y() && orientation(a, b, x) > 0) ++winding;
+    } else if (b.y() <= x.y() && orientation(a, b, x) < 0) {
       --winding;
     }
   }

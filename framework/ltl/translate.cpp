@@ -123,25 +123,25 @@ class Clock {
   // The time budget alone, inside loops whose single pass can outlast it (the dominance test of
   // a state with 2^n transitions); the clock is read every 64 polls.
   void poll(const char* stage) {
-    if ((++polls_ & 63u) == 0 && ms() > options_.max_seconds * 1000.0) {
-      throw BudgetExceeded(std::string("ltl translation: ") + stage +
-                           " exceeds the time budget of " + std::to_string(options_.max_seconds) +
-                           " s");
-    }
+    if ((++polls_ & 63u) == 0) check_time(stage);
   }
   void check(const char* stage, std::size_t states) {
     if (states > options_.max_states) {
       throw BudgetExceeded(std::string("ltl translation: ") + stage + " exceeds the budget of " +
                            std::to_string(options_.max_states) + " states");
     }
-    if ((++ticks_ & 255u) == 0 && ms() > options_.max_seconds * 1000.0) {
+    if ((++ticks_ & 255u) == 0) check_time(stage);
+  }
+
+ private:
+  void check_time(const char* stage) const {
+    if (ms() > options_.max_seconds * 1000.0) {
       throw BudgetExceeded(std::string("ltl translation: ") + stage +
                            " exceeds the time budget of " + std::to_string(options_.max_seconds) +
                            " s");
     }
   }
 
- private:
   std::chrono::steady_clock::time_point start_;
   const TranslateOptions& options_;
   std::uint32_t ticks_ = 0;
