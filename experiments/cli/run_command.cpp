@@ -105,12 +105,13 @@ int run_run(const std::vector<std::string>& args) {
         "  recoveries (%s variant): %d guide paths, %d back-ups, %d singular switches, "
         "%d convex fallbacks, %d restores, %d early releases, %d withdrawals, %d release "
         "points, %d early docks, %d turns toward the goal, %d narrow passages cleared, %d "
-        "ways cleared beside unknown obstacles, %d drops in a pocket\n",
+        "ways cleared beside unknown obstacles, %d drops in a pocket, %d drop points chosen "
+        "again\n",
         s.controller.variant.c_str(), t.recoveries.guides, t.recoveries.back_outs,
         t.recoveries.singular, t.recoveries.fallbacks, t.recoveries.restores,
         t.recoveries.early_releases, t.recoveries.withdrawals, t.recoveries.release_points,
         t.recoveries.early_docks, t.recoveries.faces, t.recoveries.narrows,
-        t.recoveries.fragment_fixes, t.recoveries.pocket_drops);
+        t.recoveries.fragment_fixes, t.recoveries.pocket_drops, t.recoveries.redrops);
   }
   std::printf("wrote %s and %s\n", metrics.string().c_str(), trajectory.string().c_str());
 

@@ -44,7 +44,8 @@ def main():
             t[1] += 1
         for k in ("guides", "back_outs", "singular_switches", "convex_fallbacks", "restores",
                   "early_releases", "withdrawals", "release_points",
-                  "early_docks", "faces", "narrows", "fragment_fixes", "pocket_drops"):
+                  "early_docks", "faces", "narrows", "fragment_fixes", "pocket_drops",
+                  "redrops"):
             rec[r["method"]][k] += int(r.get(k) or 0)
         collisions[r["method"]] += int(r["collisions"]) > 0
     keys = {(r["class"], r["objects"], r["target_density"], r["instance_seed"]) for r in rows}
@@ -68,15 +69,16 @@ def main():
     print()
     print("| method | trials with a collision | guides | back-ups | singular switches | "
           "convex fallbacks | restores | early releases | withdrawals | release points | early docks | "
-          "turns to the goal | narrow passages | ways beside unknown obstacles | pocket drops |")
-    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+          "turns to the goal | narrow passages | ways beside unknown obstacles | pocket drops | redrops |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     for m in methods:
         if m in rec:
             r = rec[m]
             print(f"| {m} | {collisions[m]} | {r['guides']} | {r['back_outs']} | "
                   f"{r['singular_switches']} | {r['convex_fallbacks']} | {r['restores']} | "
                   f"{r['early_releases']} | {r['withdrawals']} | {r['release_points']} | {r['early_docks']} | "
-                  f"{r['faces']} | {r['narrows']} | {r['fragment_fixes']} | {r['pocket_drops']} |")
+                  f"{r['faces']} | {r['narrows']} | {r['fragment_fixes']} | {r['pocket_drops']} | "
+                  f"{r['redrops']} |")
 
 
 if __name__ == "__main__":

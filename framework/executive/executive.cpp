@@ -620,6 +620,7 @@ Executive::Advance Executive::rebuild(Activity& a, double radius, const Point& c
   }
   if (a.built && (a.built_target - target).norm() > p_.progress.progress_step) {
     a.monitor.reset(t);
+    a.guide_best = std::numeric_limits<double>::infinity();  // distances to another x*
   }
   a.built = true;
   a.built_version = map_.version();
@@ -727,9 +728,33 @@ Executive::Advance Executive::recover(Activity& a, const Pose& pose, const Point
   std::string note;
   if (!plan_guide(a, center, t, note)) {
     out.reason += note;
+    if (std::optional<Advance> r = redrop(a, t)) return *r;
     if (std::optional<Advance> n = narrow(a, pose)) return *n;
     return out;
   }
+  out.kind = Advance::kRestart;
+  return out;
+}
+
+// Robust variant (RobustParams::redrop): the law and every guide failed to reach a DISASSEMBLE's
+// drop point; it is rejected with its surroundings (drop_point) and the action plans again with
+// a fresh guide budget, up to kMaxRedrops per action. nullopt otherwise.
+std::optional<Executive::Advance> Executive::redrop(Activity& a, double t) {
+  if (a.kind != Kind::kDisassemble || !p_.robust.redrop || !p_.robust.drop || !a.target ||
+      a.redrops >= kMaxRedrops) {
+    return std::nullopt;
+  }
+  ++a.redrops;
+  ++recoveries_.redrops;
+  a.rejected_drops.push_back(*a.target);
+  a.planned = false;
+  a.target.reset();
+  a.guide.clear();
+  a.tracking = false;
+  a.guides = 0;
+  a.guide_best = std::numeric_limits<double>::infinity();
+  a.monitor.reset(t);
+  Advance out;
   out.kind = Advance::kRestart;
   return out;
 }
@@ -865,6 +890,11 @@ bool Executive::early_dock(const Activity& a, const Pose& pose) {
 }
 
 bool Executive::plan_guide(Activity& a, const Point& center, double t, std::string& note) {
+  // Robust variant (RobustParams::persist): the budget starts again once the centre is
+  // kPersistProgress closer to x* than at every earlier guide of the action.
+  const double to_goal = (center - a.goal).norm();
+  if (p_.robust.persist && to_goal <= a.guide_best - kPersistProgress) a.guides = 0;
+  a.guide_best = std::min(a.guide_best, to_goal);
   if (a.guides >= p_.guide.max_recoveries) {
     note = " (after " + std::to_string(a.guides) + " guide paths)";
     return false;

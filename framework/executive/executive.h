@@ -36,6 +36,7 @@
 
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <optional>
 #include <span>
@@ -68,6 +69,9 @@ inline constexpr double kDropClearance = 3;
 inline constexpr std::array<double, 5> kDropLevels = {kDropClearance, 2.5, 2, 1.5, 1};
 // Drop points chosen again per DISASSEMBLE when a newly seen fragment takes the last one.
 inline constexpr int kMaxDropRetargets = 8;
+// Drop points chosen again per DISASSEMBLE after the law and every guide failed to reach the last
+// (RobustParams::redrop).
+inline constexpr int kMaxRedrops = 4;
 // m beyond the approach circle within which RobustParams::early_dock applies.
 inline constexpr double kEarlyDockReach = 0.1;
 // Miter limit (units of the dilation radius) of RobustParams::bevel.
@@ -107,6 +111,8 @@ inline constexpr double kGuideWiden = 0.1;
 // Sides of the polygon about the robot's (or pair's) disk by which RobustParams::memory dilates
 // what has been seen of an unknown obstacle (a superset of the round dilation by 2 %).
 inline constexpr int kSeenDilationSides = 16;
+// m closer to x* than at every earlier guide for RobustParams::persist to renew the guide budget.
+inline constexpr double kPersistProgress = 0.5;
 
 struct RobustParams {
   // When the progress monitor fires, follow waypoints of a path in the known freespace
@@ -225,6 +231,20 @@ struct RobustParams {
   // the obstacle (it is convex), so a path it blocks is blocked; when it leaves none, the guide
   // runs in F_k alone.
   bool memory = true;
+  // The guide budget (GuideParams::max_recoveries) counts only guides that brought no progress:
+  // when the progress monitor fires with the centre kPersistProgress closer to x* than at every
+  // earlier guide of the action, the budget starts again. In dense clutter the way to x* runs
+  // past unknown obstacles that the sensor reveals one at a time, each a new rest point of the
+  // law; four guides ended such journeys half way (measured: most of the sweep's "revisited"
+  // failures at density 0.35). The best distance drops by kPersistProgress at each renewal, so
+  // an action still ends.
+  bool persist = true;
+  // A DISASSEMBLE whose drop point the law and every guide failed to reach chooses another one
+  // (the failed point and its surroundings rejected, as for a point a fragment took), up to
+  // kMaxRedrops per action, instead of ending stuck: the drop point is the interface
+  // layer's choice (paper §V-B), not the task's, and the nearest clear point may lie past a
+  // wall of unknown obstacles the robot had not seen when it chose it.
+  bool redrop = true;
   double withdraw_clearance = 0.25;  // m beyond the pair's dilation radius
   double withdraw_max = 1.0;         // m of straight reverse travel at most
   int max_back_outs = 4;             // per action
@@ -243,6 +263,7 @@ struct RecoveryCounts {
   int early_docks = 0;     // GRASPs docked from where the robot stalled beside the object
   int faces = 0;           // turns toward the goal after a back-up
   int narrows = 0;         // Fix-mode entries for objects narrowing a passage the law failed
+  int redrops = 0;         // drop points chosen again after the law and every guide failed
   int fragment_fixes = 0;  // Fix-mode entries for objects closing the way with unknown obstacles
   int pocket_drops = 0;    // DISASSEMBLE drop points chosen where nothing is clear (a pocket)
 };
@@ -265,7 +286,8 @@ inline constexpr RecoveryField kRecoveryFields[] = {
     {"faces", &RecoveryCounts::faces},
     {"narrows", &RecoveryCounts::narrows},
     {"fragment_fixes", &RecoveryCounts::fragment_fixes},
-    {"pocket_drops", &RecoveryCounts::pocket_drops}};
+    {"pocket_drops", &RecoveryCounts::pocket_drops},
+    {"redrops", &RecoveryCounts::redrops}};
 
 struct ExecutiveParams {
   double robot_radius = 0.2;  // r (m)
@@ -407,6 +429,8 @@ class Executive {
     // back-up in progress and the convex pieces forced after a singular Dh.
     std::vector<Point> guide;
     int guides = 0;
+    // RobustParams::persist: the least distance of the centre to x* when a guide was planned.
+    double guide_best = std::numeric_limits<double>::infinity();
     int back_outs = 0;
     bool backing = false;
     double backing_travel = 0;     // m moved (arc length of the centre) in this back-up
@@ -420,6 +444,7 @@ class Executive {
     Facing facing = Facing::kNo;     // turn toward the law's goal first (RobustParams::face)
     bool guide_pending = false;      // plan a guide at the next rebuild (after such a back-up)
     int retargets = 0;               // drop points chosen again after a fragment took one
+    int redrops = 0;                 // drop points chosen again after every guide failed
     std::vector<Point> rejected_drops;
     // The kDropLevels index the drop point was chosen at (kDropLevels.size(): the clearest
     // point, no clearance asked); the point is kept while it still meets it.
@@ -454,6 +479,7 @@ class Executive {
   Advance back_off(Activity& a, const Pose& pose, double t, double dt);
   Advance navigate(Activity& a, const Pose& pose, double t, double dt);
   std::optional<Advance> narrow(Activity& a, const Pose& pose);
+  std::optional<Advance> redrop(Activity& a, double t);
   std::optional<Advance> fragment_blockers(Activity& a, double radius, const Point& center);
   struct Narrowing {
     std::vector<std::size_t> blocking;  // indices into the map's movable objects

@@ -78,6 +78,8 @@ executive::TaskSpec task_spec(const scenario::Scenario& s) {
   e.robust.widen = s.controller.widen;
   e.robust.fragments = s.controller.fragments;
   e.robust.memory = s.controller.memory;
+  e.robust.persist = s.controller.persist;
+  e.robust.redrop = s.controller.redrop;
   if (s.controller.variant == "paper") e.robust.contact_margin = 0;
   e.max_ltl_actions = s.simulation.max_actions;
   return t;

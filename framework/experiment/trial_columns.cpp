@@ -151,6 +151,7 @@ const std::vector<std::string>& trial_columns() {
                                                    "narrows",
                                                    "fragment_fixes",
                                                    "pocket_drops",
+                                                   "redrops",
                                                    "collisions",
                                                    "min_clearance_m",
                                                    "queries",

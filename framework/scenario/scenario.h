@@ -81,6 +81,8 @@ struct Controller {
   bool scan = true;             // robust only: read unknown fragments every scan_spacing
   bool fragments = true;        // robust only: Fix mode for objects closing x* off with fragments
   bool memory = true;           // robust only: guide paths avoid what was seen of unknown obstacles
+  bool persist = true;          // robust only: guides that bring the robot closer renew the budget
+  bool redrop = true;           // robust only: an unreachable drop point is chosen again
 };
 
 // The robust variant's switches by key (scenario files; the ablation methods "rearm-no<key>").
@@ -97,7 +99,8 @@ inline constexpr RobustSwitch kRobustSwitches[] = {
     {"face", &Controller::face},           {"narrow", &Controller::narrow},
     {"track", &Controller::track},         {"escape", &Controller::escape},
     {"widen", &Controller::widen},         {"scan", &Controller::scan},
-    {"fragments", &Controller::fragments}, {"memory", &Controller::memory}};
+    {"fragments", &Controller::fragments}, {"memory", &Controller::memory},
+    {"persist", &Controller::persist},     {"redrop", &Controller::redrop}};
 
 // Sets the variant ("robust" or "paper") and every switch: all on, or all off.
 inline void set_variant(Controller& c, const std::string& variant) {

@@ -102,7 +102,9 @@ void read_controller(Reader& r, const YAML::Node& n, Controller& c) {
                   "widen",
                   "scan",
                   "fragments",
-                  "memory"});
+                  "memory",
+                  "persist",
+                  "redrop"});
   struct Field {
     const char* key;
     double* value;
