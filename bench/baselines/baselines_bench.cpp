@@ -1,4 +1,4 @@
-// Benchmarks of the OMPL rearrangement baselines (issue 7):
+// Benchmarks of the OMPL rearrangement baselines:
 //  - TimeLimit/<method>: the wall time a planner takes when given 1 s on an instance no
 //    rearrangement planner can solve (experiments/scenarios/pocket.yaml: the goal lies in a
 //    pocket too narrow for the robot–object pair). Acceptance: back within 1.2 s. Counters:

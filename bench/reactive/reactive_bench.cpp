@@ -1,4 +1,4 @@
-// The reactive layer's speed (issue 4, acceptance 4) on the scene of docs/reactive.md §7
+// The reactive layer's speed on the scene of docs/reactive.md §7
 // ("Speed to beat"): 20 × 20 m, K familiar non-convex obstacles (test_support::benchmark_scene),
 // radius 0.2, DiffeoParams{} (p = 20, ε = 1, μ1 = 1, μ2 = 0.05), K = 1, 2, 5, 10, 15, 20:
 // - BM_MappedSpace: build_mapped_space (exact CGAL Booleans);

@@ -1,4 +1,4 @@
-// Mission controller benchmarks (issue 3): building G and d_F (paper Appendix I-B) for the
+// Mission controller benchmarks: building G and d_F (paper Appendix I-B) for the
 // rearrangement formula (1) with 1–50 objects and for patrol formulas with 2–20 regions, and
 // one online decision (Appendix I-C). Targets: G for 10 objects <= 1 ms; a decision <= 1 µs.
 #include <benchmark/benchmark.h>

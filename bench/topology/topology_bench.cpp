@@ -1,6 +1,6 @@
-// The topology check's speed (issue 5, acceptance 4; docs/executive.md "Benchmarks
+// The topology check's speed (docs/executive.md "Benchmarks
 // required"): check_topology swept over the number of movable objects (1, 2, 4, 8, 16, 32)
-// × familiar obstacles (0, 4, 16, 64), plus the target point of issue 5 (10 objects × 20
+// × familiar obstacles (0, 4, 16, 64), plus the target point of docs/executive.md (10 objects × 20
 // obstacles, ≤ 1 ms), for the robot alone (radius 0.2) and carrying an object (the pair,
 // radius 0.2 + 0.3; the carried object left out); each without and with a TopologyCache.
 //
@@ -222,7 +222,7 @@ void sweep(benchmark::internal::Benchmark* b) {
     for (int obstacles : {0, 4, 16, 64}) {
       for (int objects : {1, 2, 4, 8, 16, 32}) b->Args({objects, obstacles, carrying});
     }
-    b->Args({10, 20, carrying});  // the target point of issue 5
+    b->Args({10, 20, carrying});  // the target point (10 objects x 20 obstacles)
   }
   b->Unit(benchmark::kMicrosecond)->MinTime(kMinTime);
 }

@@ -20,7 +20,8 @@ namespace fs = std::filesystem;
 
 constexpr const char* kUsage =
     "usage: rearm run SCENARIO.yaml [--out DIR] [--seed N] [--plant box2d|kinematic]\n"
-    "                 [--stride N] [--variant paper|robust] [--no-plot] [--no-animation]\n\n"
+    "                 [--stride N] [--variant paper|robust] [--checked] [--no-plot]\n"
+    "                 [--no-animation]\n\n"
     "Runs the scenario's LTL task: mission controller, interface layer (LTL and Fix modes),\n"
     "topology check and reactive controller, in a Box2D world (or on the kinematic plant).\n"
     "Writes DIR/metrics.json (status, collisions, times, actions, path lengths, ...),\n"
@@ -29,6 +30,9 @@ constexpr const char* kUsage =
     "when they are missing). DIR defaults to out/<scenario name>.\n"
     "  --seed N        recorded in the metrics (a fixed scenario draws no random number)\n"
     "  --stride N      steps between trajectory samples (default 10)\n"
+    "  --checked       check the closed loop's invariants on every tick (finite commands, no\n"
+    "                  overlap beyond Box2D's slop, det Dh > 0, the law's model point in the\n"
+    "                  model freespace); a violation is an internal error (exit 1) naming it\n"
     "  --variant V     override the scenario's controller variant: paper (the paper's\n"
     "                  choices only) or robust (every extension; experiments/sweeps/README.md)\n"
     "Exit: 0 when the task completed, 1 when it ended infeasible, stuck or by timeout,\n"
@@ -69,6 +73,8 @@ int run_run(const std::vector<std::string>& args) {
       if (variant != "paper" && variant != "robust") {
         throw Error("--variant expects paper or robust, got '" + variant + "'");
       }
+    } else if (a == "--checked") {
+      options.checked = true;
     } else if (a == "--no-plot") {
       plot = false;
     } else if (a == "--no-animation") {

@@ -27,7 +27,7 @@ namespace fs = std::filesystem;
 
 constexpr const char* kUsage =
     "usage: rearm sweep SWEEP.yaml --out DIR [--threads T] [--shard I/N]\n"
-    "                  [--resume-any-revision] [--quiet]\n"
+    "                  [--resume-any-revision] [--checked] [--quiet]\n"
     "       rearm sweep merge DIR... --out DIR\n"
     "       rearm sweep report DIR [--no-plot]\n\n"
     "Runs a Monte Carlo sweep (format: experiments/sweeps/README.md): every method of the file\n"
@@ -41,6 +41,10 @@ constexpr const char* kUsage =
     "  --shard I/N            run only shard I of N (0 <= I < N): instances whose index is I\n"
     "                         mod N, each with all its methods; merge the shards' folders after\n"
     "  --resume-any-revision  resume a DIR whose rows came from another build revision\n"
+    "  --checked              rearm's trials check the closed loop's invariants on every tick\n"
+    "                         (finite commands, no overlap beyond Box2D's slop, det Dh > 0,\n"
+    "                         the law's model point in the model freespace); a violation\n"
+    "                         ends the trial with status error and names it\n"
     "  --quiet                no progress lines\n"
     "merge: unites the rows of shard (or interrupted) folders of one sweep into --out.\n"
     "report: writes DIR/report.md, the plots DIR/*.png (python3 with matplotlib) and the OMPL\n"
@@ -141,6 +145,8 @@ int run_sweep_file(const std::vector<std::string>& args) {
       o.shard = experiment::parse_shard(option_value(args, i));
     } else if (a == "--resume-any-revision") {
       o.resume_any_revision = true;
+    } else if (a == "--checked") {
+      o.checked = true;
     } else if (a == "--quiet") {
       o.progress = nullptr;
     } else if (a.rfind("--", 0) == 0) {

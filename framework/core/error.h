@@ -22,6 +22,14 @@ class BudgetExceeded : public Error {
   explicit BudgetExceeded(const std::string& what) : Error(what) {}
 };
 
+// The closed loop's checked mode found an invariant broken (executive/task_runner.h,
+// TaskOptions::check_invariants): a bug in rearm, caught per trial (the sweep's status
+// `error`, with this message) instead of aborting the whole process as REARM_DEMAND does.
+class InvariantViolation : public std::logic_error {
+ public:
+  explicit InvariantViolation(const std::string& what) : std::logic_error(what) {}
+};
+
 namespace detail {
 [[noreturn]] void demand_failed(const char* condition, const char* file, int line,
                                 const std::string& message);

@@ -254,6 +254,7 @@ Command Executive::step(const Pose& pose, double t, double dt) {
   }
   gripper_ = GripperAction::kNone;
   gripper_object_.clear();
+  law_command_ = false;
   for (int guard = 0; guard < kMaxTransitionsPerTick && !finished(); ++guard) {
     Activity* a = current();
     if (a == nullptr) {
@@ -752,6 +753,7 @@ std::optional<Executive::Advance> Executive::redrop(Activity& a, double t) {
   a.guide.clear();
   a.tracking = false;
   a.guides = 0;
+  a.guide_base = 0;
   a.guide_best = std::numeric_limits<double>::infinity();
   a.monitor.reset(t);
   Advance out;
@@ -830,6 +832,7 @@ std::optional<Executive::Advance> Executive::fix_mode_for(Activity& a,
   out.kind = Advance::kBlocked;
   out.reason = std::move(reason);
   a.guides = 0;
+  a.guide_base = 0;
   a.back_outs = 0;
   a.contact_outs = 0;
   return out;
@@ -891,11 +894,12 @@ bool Executive::early_dock(const Activity& a, const Pose& pose) {
 
 bool Executive::plan_guide(Activity& a, const Point& center, double t, std::string& note) {
   // Robust variant (RobustParams::persist): the budget starts again once the centre is
-  // kPersistProgress closer to x* than at every earlier guide of the action.
+  // kPersistProgress closer to x* than at every earlier guide of the action (the guides counted
+  // for widen go on).
   const double to_goal = (center - a.goal).norm();
-  if (p_.robust.persist && to_goal <= a.guide_best - kPersistProgress) a.guides = 0;
+  if (p_.robust.persist && to_goal <= a.guide_best - kPersistProgress) a.guide_base = a.guides;
   a.guide_best = std::min(a.guide_best, to_goal);
-  if (a.guides >= p_.guide.max_recoveries) {
+  if (a.guides - a.guide_base >= p_.guide.max_recoveries) {
     note = " (after " + std::to_string(a.guides) + " guide paths)";
     return false;
   }
@@ -1031,6 +1035,7 @@ Executive::Advance Executive::command(Activity& a, const Pose& pose, double rho,
   Advance out;
   try {
     out.u = map_.carried() ? controller_.pair(pose, rho, dt) : controller_.unicycle(pose, dt);
+    law_command_ = true;
   } catch (const reactive::OutsideModelFreespace& e) {
     if (p_.robust.convex_fallback && !a.convex_all && centre_inside(a, pose)) {
       // The centre lies inside F_k, clear of ∂F_k, yet h took it into a model obstacle: the
@@ -1053,6 +1058,17 @@ Executive::Advance Executive::command(Activity& a, const Pose& pose, double rho,
     out.kind = Advance::kRestart;
   }
   return out;
+}
+
+std::optional<std::string> Executive::law_invariant_violation() const {
+  if (!law_command_) return std::nullopt;
+  const reactive::ReactiveController::LawSample& s = controller_.last_law_sample();
+  if (!(s.det > 0)) return "det Dh = " + fmt(s.det) + " <= 0 at x = " + point_text(s.x);
+  if (std::optional<std::string> why =
+          reactive::outside_model_freespace(controller_.diffeo().model(), s.y)) {
+    return "the law's model point of x = " + point_text(s.x) + ": " + *why;
+  }
+  return std::nullopt;
 }
 
 // Robust variant, carrying: does a checked move (a turn toward the goal, a back-up) keep the pair

@@ -381,6 +381,11 @@ class Executive {
   int topology_checks() const { return topology_checks_; }
   int rebuilds() const { return controller_.rebuilds(); }
   const ComputeTimes& compute_times() const { return times_; }
+  // The checked mode (task_runner.h): when the last step's command was the reactive law's, why
+  // the law's state breaks [7]'s invariants (det Dh(x) <= 0 at the centre, or its model point
+  // h(x) not strictly inside the model freespace); nullopt when it holds or the command was
+  // not the law's (a back-up, a turn, a tracked step: each checked against the map instead).
+  std::optional<std::string> law_invariant_violation() const;
   RecoveryCounts recoveries() const;
   bool in_fix_mode() const { return !fix_.empty(); }
   // "move(l1)" etc., or "" when idle.
@@ -429,8 +434,10 @@ class Executive {
     // back-up in progress and the convex pieces forced after a singular Dh.
     std::vector<Point> guide;
     int guides = 0;
-    // RobustParams::persist: the least distance of the centre to x* when a guide was planned.
+    // RobustParams::persist: the least distance of the centre to x* when a guide was planned,
+    // and the guide count at the last renewal of the budget (guides - guide_base are counted).
     double guide_best = std::numeric_limits<double>::infinity();
+    int guide_base = 0;
     int back_outs = 0;
     bool backing = false;
     double backing_travel = 0;     // m moved (arc length of the centre) in this back-up
@@ -577,6 +584,7 @@ class Executive {
   int fix_entries_ = 0;
   int ltl_done_ = 0;
   int topology_checks_ = 0;
+  bool law_command_ = false;  // the last step's command came from the reactive law
   ComputeTimes times_;
   RecoveryCounts recoveries_;
   std::map<std::string, std::string> placed_;  // object → region of its last LTL release

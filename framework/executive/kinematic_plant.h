@@ -1,6 +1,6 @@
 // The kinematic plant (no Box2D): the robot moves by exact zero-order-hold unicycle steps
 // (reactive/kinematics.h), a gripped object moves rigidly with it, objects that are not held
-// never move, and collisions are counted against the exact ground-truth geometry. Issue 5's
+// never move, and collisions are counted against the exact ground-truth geometry. The
 // end-to-end tests run whole tasks on it; sim/ (Box2D) adds dynamics and contacts.
 #pragma once
 

@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <limits>
+#include <optional>
+#include <string>
 
 #include "core/error.h"
 #include "ltl/parser.h"
@@ -17,6 +20,29 @@ using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+std::string fmt(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", v);
+  return buf;
+}
+
+// TaskOptions::check_invariants: throws InvariantViolation on the first broken invariant.
+void check_tick(const Command& cmd, const Plant& plant, const Executive& exec, double t) {
+  auto fail = [&](const std::string& what) {
+    throw InvariantViolation("invariant broken at t = " + fmt(t) + " s during " +
+                             exec.current_action() + ": " + what);
+  };
+  if (!std::isfinite(cmd.u.v) || !std::isfinite(cmd.u.omega)) {
+    fail("non-finite command (v, omega) = (" + fmt(cmd.u.v) + ", " + fmt(cmd.u.omega) + ")");
+  }
+  const double clearance = plant.clearance();
+  if (!(clearance >= -kInvariantSlop)) {
+    fail("the robot or the object it holds overlaps an obstacle, an object or the boundary by " +
+         fmt(-clearance) + " m (beyond the slop " + fmt(kInvariantSlop) + " m)");
+  }
+  if (std::optional<std::string> why = exec.law_invariant_violation()) fail(*why);
 }
 
 }  // namespace
@@ -65,6 +91,7 @@ TaskResult run_task(const TaskSpec& spec, Plant& plant, const TaskOptions& o) {
     const Clock::time_point c0 = Clock::now();
     const Command cmd = exec.step(pose, t, o.dt);
     res.controller_time += seconds_since(c0);
+    if (o.check_invariants) check_tick(cmd, plant, exec, t);
     // The gripper acts; perception records what it holds (a failed grip holds nothing, and the
     // executive ends the grasp stuck on the next tick).
     if (cmd.gripper == GripperAction::kClose) {

@@ -33,7 +33,17 @@ struct TaskOptions {
   double dt = reactive::kDefaultStep;  // s
   double max_time = 1200;              // s of simulated time (the time budget)
   bool record_path = true;
+  // Checked mode: after every tick's command, the closed loop's invariants: (v, ω) finite; the
+  // robot and the object it holds (the plant's ground-truth clearance) overlapping nothing by
+  // more than kInvariantSlop; and, for the reactive law's commands, det Dh > 0 at the centre
+  // and its model point strictly inside the model freespace (Executive::law_invariant_violation).
+  // A violation throws rearm::InvariantViolation naming the time, the action and the breach.
+  bool check_invariants = false;
 };
+
+// m: the overlap the checked mode tolerates, Box2D's linear slop (b2_linearSlop, the
+// penetration its contact solver allows); the kinematic plant's exact geometry meets it too.
+inline constexpr double kInvariantSlop = 0.005;
 
 struct TaskResult {
   TaskStatus status = TaskStatus::kRunning;

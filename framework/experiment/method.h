@@ -22,6 +22,9 @@ struct MethodInput {
   std::uint64_t seed = 0;    // the planner seed
   double time_limit_s = 10;  // planning budget (baselines); rearm is bounded by simulated time
   long query_limit = 0;      // the baselines' deterministic search budget (0: none)
+  // rearm: the closed loop's invariants checked on every tick (executive/task_runner.h,
+  // TaskOptions::check_invariants); a violation throws, i.e. an `error` row with its message.
+  bool checked = false;
 };
 
 class Method {

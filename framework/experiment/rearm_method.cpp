@@ -49,6 +49,7 @@ class RearmMethod final : public Method {
     RunOptions o;
     o.seed = in.seed;
     o.record = false;
+    o.checked = in.checked;
     const RunRecord r = run_scenario(s, o);
     const executive::TaskResult& x = r.result;
     TrialOutcome out;

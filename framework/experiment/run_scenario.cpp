@@ -37,6 +37,7 @@ RunRecord run_scenario(const scenario::Scenario& s, const RunOptions& o) {
   topt.dt = s.simulation.dt;
   topt.max_time = s.simulation.time_budget;
   topt.record_path = o.record;
+  topt.check_invariants = o.checked;
   RunRecord r;
   r.scenario = s.name;
   r.seed = o.seed;

@@ -22,6 +22,8 @@ struct RunOptions {
   // executive and the controllers are deterministic); the seed identifies the run in sweeps.
   std::uint64_t seed = 0;
   bool record = true;  // keep the paths (needed for the trajectory, figure and animation)
+  // Check the closed loop's invariants on every tick (executive::TaskOptions::check_invariants).
+  bool checked = false;
 };
 
 struct RunRecord {

@@ -4,8 +4,8 @@
 // each). Indices are canonical (that order), so a trial's index, seeds and settings depend on
 // the sweep file alone — not on the thread count, the shard or the order trials finish in.
 //
-// Seeds (house style: every draw from a seeded generator): an instance's seed is derived from (base seed,
-// N, repetition) only, so that the cells of one N share their random draws (common random
+// Seeds (house style: every draw from a seeded generator): an instance's seed is derived from (base
+// seed, N, repetition) only, so that the cells of one N share their random draws (common random
 // numbers): the same object starts, goals and robot in every class, density and shape mix —
 // the generator keeps one random stream per placement stage — and the comparisons between
 // densities or classes are paired. A trial's planner seed is derived from (instance seed,

@@ -90,7 +90,7 @@ Generated generate(const InstanceJob& job, const fs::path& instances) {
 }
 
 TrialRecord run_one(const SweepPlan& plan, const TrialJob& t, const Generated& g,
-                    const MethodRegistry& methods, const Provenance& provenance) {
+                    const MethodRegistry& methods, const Provenance& provenance, bool checked) {
   TrialRecord r;
   r.index = t.index;
   r.sweep = plan.name;
@@ -107,7 +107,7 @@ TrialRecord run_one(const SweepPlan& plan, const TrialJob& t, const Generated& g
   try {
     r.outcome = methods.get(t.settings.method)
                     .run(*g.scenario, MethodInput{t.settings.planner_seed, t.settings.time_limit_s,
-                                                  t.settings.query_limit});
+                                                  t.settings.query_limit, checked});
   } catch (const std::exception& e) {
     r.outcome = TrialOutcome{};
     r.outcome.status = TrialStatus::kError;
@@ -196,7 +196,8 @@ SweepSummary run_sweep(const SweepPlan& plan, const MethodRegistry& methods,
         [&](const tbb::blocked_range<std::size_t>& range) {
           for (std::size_t k = range.begin(); k != range.end(); ++k) {
             const TrialJob& t = *todo[k];
-            const TrialRecord r = run_one(plan, t, generated[t.instance], methods, provenance);
+            const TrialRecord r =
+                run_one(plan, t, generated[t.instance], methods, provenance, o.checked);
             log.append(trial_row(r));
             const bool ok = is_success(r.outcome);
             const bool error = r.outcome.status == TrialStatus::kError;

@@ -32,6 +32,8 @@ struct SweepOptions {
   // Resume a CSV whose rows came from another build revision (refused by default: rows of two
   // revisions would be pooled silently).
   bool resume_any_revision = false;
+  // rearm's trials check the closed loop's invariants on every tick (MethodInput::checked).
+  bool checked = false;
   std::FILE* progress = stderr;  // nullptr: silent
 };
 

@@ -3,6 +3,8 @@
 // obstacles, left as they are). The navigation law of Arslan & Koditschek runs here.
 #pragma once
 
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "geometry/convex.h"
@@ -15,5 +17,11 @@ struct ModelSpace {
   std::vector<geometry::Disk> disks;      // model disks of familiar obstacles, movable objects
   std::vector<geometry::Polygon> convex;  // unknown convex obstacles (counter-clockwise)
 };
+
+// Why y is not strictly inside the model freespace (outside or on the boundary F_e, inside or on
+// a disk or a convex obstacle), nullopt when it is. The checked mode's test of the law's model
+// point (executive/task_runner.h), written apart from local_freespace, which asks the same
+// before every command.
+std::optional<std::string> outside_model_freespace(const ModelSpace& m, const geometry::Point& y);
 
 }  // namespace rearm::reactive

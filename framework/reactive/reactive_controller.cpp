@@ -117,8 +117,9 @@ bool ReactiveController::retarget(const Point& goal) {
 
 Point ReactiveController::holonomic(const Point& x, double dt) {
   if (!diffeo_) throw Error("reactive controller: command requested before rebuild()");
-  Point u =
-      fully_actuated_velocity(diffeo_->model(), diffeo_->evaluate(x), model_goal_, nav_, scratch_);
+  const DiffeoEval e = diffeo_->evaluate(x);
+  sample_ = LawSample{x, e.h, e.J.determinant()};
+  Point u = fully_actuated_velocity(diffeo_->model(), e, model_goal_, nav_, scratch_);
   for (int k = 0; k < kSafetyHalvings; ++k, u /= 2) {
     if (geometry::convex_contains(scratch_.lf, diffeo_->map(holonomic_step(x, u, dt)))) return u;
   }
@@ -128,6 +129,7 @@ Point ReactiveController::holonomic(const Point& x, double dt) {
 Twist ReactiveController::unicycle(const Pose& pose, double dt) {
   if (!diffeo_) throw Error("reactive controller: command requested before rebuild()");
   const DiffeoEval e = diffeo_->evaluate(pose.x);
+  sample_ = LawSample{pose.x, e.h, e.J.determinant()};
   Twist u = unicycle_command(diffeo_->model(), e, pose.psi, model_goal_, nav_, scratch_);
   // Discrete-time guard: near sharp corners h is strongly anisotropic, dξ/dψ reaches 10–20
   // and D²h is large, so the two parts of ξ̇ (the turn, and the rotation the translation
@@ -154,8 +156,9 @@ Twist ReactiveController::unicycle(const Pose& pose, double dt) {
 Twist ReactiveController::pair(const Pose& pose, double rho_i, double dt) {
   if (!diffeo_) throw Error("reactive controller: command requested before rebuild()");
   const Point xc = pair_center(pose.x, pose.psi, rho_i);
-  Twist u = pair_command(diffeo_->model(), diffeo_->evaluate(xc), pose.psi, rho_i, model_goal_,
-                         nav_, scratch_);
+  const DiffeoEval e = diffeo_->evaluate(xc);
+  sample_ = LawSample{xc, e.h, e.J.determinant()};
+  Twist u = pair_command(diffeo_->model(), e, pose.psi, rho_i, model_goal_, nav_, scratch_);
   for (int k = 0; k < kSafetyHalvings; ++k, u = Twist{u.v / 2, u.omega / 2}) {
     const Pose next = unicycle_step(pose, u, dt);
     if (geometry::convex_contains(scratch_.lf,

@@ -92,6 +92,15 @@ class ReactiveController {
   const NavParams& nav() const { return nav_; }
   int rebuilds() const { return rebuilds_; }
 
+  // The law's last evaluation (holonomic, unicycle or pair): the centre x, its model point
+  // y = h(x) and det Dh(x), for the closed loop's checked mode (executive/task_runner.h).
+  struct LawSample {
+    Point x = Point::Zero();
+    Point y = Point::Zero();
+    double det = 0;
+  };
+  const LawSample& last_law_sample() const { return sample_; }
+
  private:
   DiffeoParams diffeo_params_;
   NavParams nav_;
@@ -106,6 +115,7 @@ class ReactiveController {
   bool fallback_ = false;
   bool convexify_all_ = false;
   int fallbacks_ = 0;
+  LawSample sample_;
 };
 
 }  // namespace rearm::reactive

@@ -3,7 +3,7 @@
 // the initial symbol π0, the set D, single-symbol multi-hop edges (Eq. 4) with every symbol
 // that drives them (Eq. 9), accepting edges (Def. 3), V_F (Eq. 6) and d_F (Eq. 7) by BFS.
 //
-// Completeness beyond the paper (issue: a symbol cycling through several states with no
+// Completeness beyond the paper (the gap: a symbol cycling through several states with no
 // self-loop is a plan the paper's G cannot express): the automaton is self-loopized first
 // (Michaud & Duret-Lutz, SPIN 2015, construction `sl`): a node is an automaton state
 // together with the letter held when entering it, and holding that letter is always

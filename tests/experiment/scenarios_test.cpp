@@ -1,4 +1,4 @@
-// Issue 6, acceptance 1: the five committed scenarios, run in the Box2D world, end completed
+// The five committed scenarios, run in the Box2D world, end completed
 // with 0 collisions under Box2D's contact accounting, enter Fix mode where the paper describes
 // it, execute the actions their formulas imply, and leave every object in its goal region
 // (ground truth from the simulator, exact point location).
@@ -45,7 +45,9 @@ class Scenarios : public ::testing::TestWithParam<Expected> {};
 TEST_P(Scenarios, CompleteSafelyWithTheFormulasActions) {
   const Expected& e = GetParam();
   const scenario::Scenario s = scenario::load_scenario("experiments/scenarios/" + e.name + ".yaml");
-  const RunRecord r = run_scenario(s);
+  RunOptions checked;
+  checked.checked = true;  // the closed loop's invariants on every tick (task_runner.h)
+  const RunRecord r = run_scenario(s, checked);
   const executive::TaskResult& t = r.result;
   std::cout << e.name << ": " << executive::to_string(t.status) << " (" << t.reason << "), "
             << t.sim_time << " s simulated, " << t.wall_time << " s wall, " << t.fix_mode_entries

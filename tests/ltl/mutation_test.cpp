@@ -29,6 +29,7 @@
 #include "support/lasso.h"
 #include "support/nba_oracle.h"
 #include "support/random_formula.h"
+#include "support/scale.h"
 #include "support/spin.h"
 
 namespace rearm::test_support {
@@ -38,7 +39,7 @@ using ltl::BddManager;
 using ltl::Formula;
 using ltl::GeneralNba;
 
-constexpr std::size_t kNumFormulas = 80;
+constexpr std::size_t kNumFormulas = 80;    // at scale 1 (support/scale.h)
 constexpr std::size_t kMutantsPerKind = 2;  // per formula
 constexpr std::size_t kRandomWords = 200;   // words per mutant for the lasso check
 constexpr std::size_t kGuidedWords = 200;   // words of spin(φ) per formula
@@ -189,7 +190,8 @@ TEST(Mutation, ChecksDetectEveryNonEquivalentMutant) {
   fo.max_aps = 3;  // the exhaustive check enumerates (2^|AP|)^5 letters
   fo.spin_safe = true;
   std::vector<Formula> formulas, negations, spin_inputs;
-  for (std::size_t i = 0; i < kNumFormulas; ++i) {
+  const std::size_t num_formulas = scaled(kNumFormulas, 8);
+  for (std::size_t i = 0; i < num_formulas; ++i) {
     formulas.push_back(random_formula(rng, fo));
     negations.push_back(Formula::lnot(formulas.back()));
     spin_inputs.push_back(negations.back());
@@ -358,7 +360,7 @@ TEST(Mutation, ChecksDetectEveryNonEquivalentMutant) {
       wrong, wrong - all.by_words, share(wrong - all.by_words), wrong - all.by_spin,
       share(wrong - all.by_spin), wrong - all.by_guided, share(wrong - all.by_guided), all.missed);
 
-  EXPECT_GE(used_formulas, kNumFormulas * 3 / 4);
+  EXPECT_GE(used_formulas, num_formulas * 3 / 4);
   // Every unsound mutant is caught (exact check); incomplete ones escape at most rarely.
   EXPECT_EQ(all.missed - missed_incomplete, 0u);
   EXPECT_LE(static_cast<double>(missed_incomplete),

@@ -860,7 +860,7 @@ TEST(ScenarioRoundTrip, WrittenForm) {
       "convex_fallback: true, back_out: true, restore: true, drop: true, "
       "early_release: true, withdraw: true, release_point: true, bevel: true, early_dock: true, "
       "face: true, narrow: true, track: true, escape: true, widen: true, scan: true, fragments: "
-      "true, memory: true}\n"
+      "true, memory: true, persist: true, redrop: true}\n"
       "simulation: {dt: 0.01, time_budget: 1200, velocity_iterations: 8, "
       "position_iterations: 3, max_actions: 0}\n");
 }
