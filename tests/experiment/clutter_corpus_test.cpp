@@ -26,8 +26,9 @@
 // by the grown check beside visible unknown obstacles (a gap the exact check finds open and the
 // mapped space closes), and the pair centre kept in F_k by turns and back-ups (a turn had swung
 // it 3 cm into a dilation, where the law's model point lies in a model obstacle), and one (sealed,
-// N = 8) that the guide budget renewed on progress completes (RobustParams::persist: without it
-// the robot, guided past unknown obstacles toward a drop point, ends after four guides).
+// N = 1, density 0.35) whose DISASSEMBLE ended stuck after four guides toward a drop point past
+// unknown obstacles: the guide budget renewed on progress (RobustParams::persist) or another
+// drop point (RobustParams::redrop) each completes it alone.
 // Every tick runs in the checked mode (executive/task_runner.h). Truth: the Box2D world's contact
 // accounting and the simulator's object positions, located
 // exactly in the goal regions.
