@@ -849,11 +849,108 @@ void simplify_ba(Automaton<A>& ba) {
   ba = std::move(out);
 }
 
+// The guard of a propositional NNF formula (tt, ff, p, !p, &, |).
+template <class A>
+typename A::Guard guard_of(const A& alpha, const Formula& f) {
+  switch (f.op()) {
+    case Op::True:
+      return alpha.top();
+    case Op::False:
+      return alpha.bottom();
+    case Op::Ap:
+    case Op::Not: {
+      const bool positive = f.op() == Op::Ap;
+      const int i = alpha.find_ap(positive ? f.name() : f.child(0).name());
+      REARM_DEMAND(i >= 0, "proposition missing from the alphabet");
+      return alpha.ap(static_cast<std::uint32_t>(i), positive);
+    }
+    case Op::And:
+    case Op::Or: {
+      typename A::Guard g = f.op() == Op::And ? alpha.top() : alpha.bottom();
+      for (const Formula& c : f.children()) {
+        g = f.op() == Op::And ? alpha.conj(g, guard_of(alpha, c))
+                              : alpha.disj(g, guard_of(alpha, c));
+      }
+      return g;
+    }
+    default:
+      REARM_DEMAND(false, "guard_of: not a propositional NNF formula");
+  }
+  return alpha.bottom();
+}
+
+// φ_1, ..., φ_n when f (rewritten, NNF) is G F φ_1 & ... & G F φ_n with n >= 2 and every φ_i
+// propositional: the form the rewriting GF(a & F b) == GF a & GF b gives a sequenced patrol
+// GF(p1 & F(p2 & ... F pn)). Empty otherwise.
+std::vector<Formula> recurrence_conjuncts(const Formula& f) {
+  if (f.op() != Op::And) return {};
+  std::vector<Formula> phis;
+  for (const Formula& c : f.children()) {
+    if (c.op() != Op::Always || c.child(0).op() != Op::Eventually ||
+        !c.child(0).child(0).is_boolean()) {
+      return {};
+    }
+    phis.push_back(c.child(0).child(0));
+  }
+  return phis;
+}
+
+// The Büchi automaton of G F φ_1 & ... & G F φ_n built directly: the degeneralized counter of
+// the one-state generalized automaton whose i-th acceptance set is the letters of φ_i (what
+// build_tgba and degeneralize give, without the 2^n transitions of the product of the n
+// conjuncts' transition sets). Level j < n waits for φ_{j+1}; a letter advances the level as
+// far as consecutive φ's hold in it; level n (all seen) is accepting and initial, and moves like
+// level 0. n + 1 states, O(n^2) edges.
+template <class A>
+Automaton<A> recurrence_automaton(const A& alpha, const std::vector<Formula>& phis, Clock& clock) {
+  Automaton<A> ba;
+  ba.alphabet = alpha;
+  const std::size_t n = phis.size();
+  std::vector<typename A::Guard> holds, fails;
+  for (const Formula& phi : phis) {
+    holds.push_back(guard_of(alpha, phi));
+    fails.push_back(guard_of(alpha, to_nnf(Formula::lnot(phi))));
+  }
+  for (std::size_t level = 0; level <= n; ++level) {
+    ba.add_state(level == n);
+    clock.check("the Büchi automaton", ba.num_states());
+  }
+  ba.initial.push_back(static_cast<std::uint32_t>(n));
+  for (std::size_t level = 0; level <= n; ++level) {
+    const std::size_t start = level == n ? 0 : level;
+    typename A::Guard prefix = alpha.top();  // φ_{start+1} & ... & φ_j
+    for (std::size_t j = start; j < n; ++j) {
+      clock.poll("the Büchi automaton");
+      ba.add_edge(static_cast<std::uint32_t>(level), static_cast<std::uint32_t>(j),
+                  alpha.conj(prefix, fails[j]));
+      prefix = alpha.conj(prefix, holds[j]);
+      if (alpha.is_false(prefix)) break;
+    }
+    ba.add_edge(static_cast<std::uint32_t>(level), static_cast<std::uint32_t>(n), prefix);
+  }
+  return ba;
+}
+
 template <class A>
 Automaton<A> translate_with(A alpha, const Formula& input, const TranslateOptions& options,
                             TranslationStats* stats) {
   Clock clock(options);
   const Formula f = options.rewrite ? rewrite(input) : to_nnf(input);
+  if (const std::vector<Formula> phis = recurrence_conjuncts(f); !phis.empty()) {
+    Automaton<A> ba = recurrence_automaton(alpha, phis, clock);
+    if (options.simplify) simplify_ba(ba);
+    if (stats) {
+      TranslationStats st;
+      st.rewritten = f.to_string(Syntax::Spot);
+      st.acceptance_sets = phis.size();
+      st.gba_states = 1;
+      st.ba_states = ba.num_states();
+      st.ba_edges = ba.num_edges();
+      st.milliseconds = clock.ms();
+      *stats = std::move(st);
+    }
+    return ba;
+  }
   Vwaa<A> vwaa(alpha, clock);
   Tgba<A> g = build_tgba(alpha, vwaa, f, clock);
   TranslationStats st;

@@ -25,6 +25,8 @@ struct TranslateOptions {
   double max_seconds = 4.0;
 };
 
+// A conjunction of G F over Boolean formulas is built directly (docs/symbolic.md, "Translation"):
+// then vwaa_states and gba_edges are 0 and gba_states 1 (no VWAA or product is built).
 struct TranslationStats {
   std::size_t vwaa_states = 0;
   std::size_t gba_states = 0, gba_edges = 0, acceptance_sets = 0;
