@@ -18,7 +18,7 @@ ctest --test-dir "$BUILD" --no-tests=error --output-on-failure -j"$JOBS"
 REARM="$BUILD/bin/rearm" bash experiments/slurm/check_local.sh
 
 # Every test program again under AddressSanitizer + UndefinedBehaviorSanitizer, at reduced
-# size (REARM_TEST_SCALE: fewer random cases, every 20th corpus instance, a 12-trial smoke
+# size (REARM_TEST_SCALE: fewer random cases, a twentieth of the corpus instances, a 12-trial smoke
 # sweep; tests/support/scale.h).
 ASAN_BUILD=${ASAN_BUILD:-build-asan}
 # At -O1 (the level the sanitizers' documentation recommends; line tables for their stack
