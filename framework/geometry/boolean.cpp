@@ -84,6 +84,10 @@ RegionSet from_set_exact(const PolygonSet& s) {
         holes.push_back(std::move(loop));
       }
     }
+    // A component whose loops all have non-positive area in doubles is a sliver that rounding
+    // collapsed (its exact area below the doubles' resolution, e.g. a triangle of 1e-16 m^2
+    // left between two nearly collinear edges): it has no area to keep, nor have its holes.
+    if (out.size() == first) continue;
     // Usually one outer loop. Otherwise a hole belongs to the smallest loop containing the
     // midpoint of one of its edges (loops of a relatively simple cycle share no edge).
     for (Polygon& h : holes) {

@@ -290,15 +290,27 @@ void print(const Formula& f, Syntax s, std::string& out) {
       binary(" V ", " R ");
       return;
     case Op::WeakUntil:
-      if (spin) {  // a W b == b V (a || b)
-        print(Formula::release(f.child(1), Formula::disj(f.child(0), f.child(1))), s, out);
+      // spin has no W. a W b == (a U b) || [] a == b V (a || b): the spelling repeats the
+      // smaller operand, so that nested W stay polynomial in size (a chain of n right-nested W
+      // printed as b V (a || b) throughout doubles n times).
+      if (spin) {
+        const Formula& a = f.child(0);
+        const Formula& b = f.child(1);
+        print(a.size() <= b.size() ? Formula::disj(Formula::until(a, b), Formula::always(a))
+                                   : Formula::release(b, Formula::disj(a, b)),
+              s, out);
       } else {
         binary(" W ", " W ");
       }
       return;
     case Op::StrongRelease:
-      if (spin) {  // a M b == b U (a && b)
-        print(Formula::until(f.child(1), Formula::conj(f.child(0), f.child(1))), s, out);
+      // spin has no M. a M b == (a R b) && <> a == b U (a && b): the smaller operand repeats.
+      if (spin) {
+        const Formula& a = f.child(0);
+        const Formula& b = f.child(1);
+        print(a.size() <= b.size() ? Formula::conj(Formula::release(a, b), Formula::eventually(a))
+                                   : Formula::until(b, Formula::conj(a, b)),
+              s, out);
       } else {
         binary(" M ", " M ");
       }

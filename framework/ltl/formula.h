@@ -88,7 +88,9 @@ class Formula {
   // Atomic proposition names in order of first occurrence (left to right).
   std::vector<std::string> atomic_propositions() const;
 
-  // Fully parenthesized where precedence needs it; reparses to an equal tree with parse().
+  // Fully parenthesized where precedence needs it. The Spot spelling reparses to an equal tree
+  // with parse(); so does the spin spelling, except that spin has no xor and a xor b is written
+  // !(a <-> b), an equivalent tree that prints to the same spin text.
   std::string to_string(Syntax syntax = Syntax::Spot) const;
 
   // Identity of the shared node (for memo tables); equal formulas may have different ids.

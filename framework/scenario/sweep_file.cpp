@@ -20,7 +20,7 @@ namespace {
 using detail::Fields;
 using detail::Reader;
 
-constexpr double kMaxSide = 100;  // m: the generator's largest workspace side
+constexpr double kMaxSide = kMaxSweepSide;
 constexpr double kMinSide = 0.5;  // m: below this no robot fits
 constexpr double kMaxFootprint = kMaxFootprintDensity;
 constexpr double kMaxPassageMarginInFile = 2;  // m (random_instance.h, InstanceSpec)
@@ -216,6 +216,16 @@ SweepFile read_sweep(Reader& r, const YAML::Node& doc) {
   }
   if (const auto v = f.find("base_seed")) s.base_seed = unsigned64(r, *v, "base_seed");
   if (const auto v = f.find("instance")) read_instance(r, *v, s.instance);
+  if (s.workspace.kind == WorkspaceRule::Kind::kFootprint) {
+    for (int n : s.objects) {
+      const double side = s.workspace.side_for(n, s.instance.object_radius);
+      if (!(side <= kMaxSide)) {
+        r.fail("workspace.footprint_density", "gives a side of " + num(side) + " m for " +
+                                                  std::to_string(n) + " objects, more than " +
+                                                  num(kMaxSide) + " m");
+      }
+    }
+  }
   if (s.trial_count() > kMaxSweepTrials) {
     r.fail("seeds", "the sweep has " + std::to_string(s.trial_count()) + " trials, more than " +
                         std::to_string(kMaxSweepTrials));

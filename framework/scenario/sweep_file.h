@@ -59,6 +59,8 @@ inline constexpr int kMaxSweepSeeds = 100000;
 inline constexpr double kMaxTrialTimeLimit = 3600;  // s
 inline constexpr int kMaxQueryLimit = 100'000'000;
 inline constexpr std::size_t kMaxSweepTrials = 10'000'000;
+// m: the generator's largest workspace side; a footprint rule that gives more is rejected.
+inline constexpr double kMaxSweepSide = 100;
 
 // Reads and validates a sweep file; throws ScenarioError(file, key, reason) for a missing or
 // unreadable file, malformed YAML, an unknown or repeated key, a missing required key, a value

@@ -28,7 +28,10 @@
 // it 3 cm into a dilation, where the law's model point lies in a model obstacle), and one (sealed,
 // N = 1, density 0.35) whose DISASSEMBLE ended stuck after four guides toward a drop point past
 // unknown obstacles: the guide budget renewed on progress (RobustParams::persist) or another
-// drop point (RobustParams::redrop) each completes it alone.
+// drop point (RobustParams::redrop) each completes it alone. tests/corpus/hardening holds
+// instances of the hardening run (experiments/sweeps/hardening.yaml) that stopped the process:
+// one whose Boolean result had a component that rounding to doubles collapsed to a sliver with
+// no positive loop (geometry/boolean.cpp).
 // Every tick runs in the checked mode (executive/task_runner.h). Truth: the Box2D world's contact
 // accounting and the simulator's object positions, located
 // exactly in the goal regions.
@@ -50,10 +53,11 @@
 namespace rearm::experiment {
 namespace {
 
-// "DIR/NAME" for every scenario file of the five corpora, in name order.
+// "DIR/NAME" for every scenario file of the six corpora, in name order.
 std::vector<std::string> corpus() {
   std::vector<std::string> files;
-  for (const char* dir : {"clutter", "comparison", "variants", "pockets", "recoveries"}) {
+  for (const char* dir :
+       {"clutter", "comparison", "variants", "pockets", "recoveries", "hardening"}) {
     for (const auto& e : std::filesystem::directory_iterator(std::string("tests/corpus/") + dir)) {
       if (e.path().extension() == ".yaml") {
         files.push_back(std::string(dir) + "/" + e.path().stem().string());

@@ -615,8 +615,13 @@ TEST(ParserRoundTripTest, SpinSyntaxWithoutWMXor) {
 
 TEST(ParserRoundTripTest, SpinExpansionsReparse) {
   // The Spin printer rewrites W, M and xor (formula.cpp); the result is their expansion.
-  expect_parse(F::weak_until(a, b).to_string(Syntax::Spin), F::release(b, F::disj(a, b)));
-  expect_parse(F::strong_release(a, b).to_string(Syntax::Spin), F::until(b, F::conj(a, b)));
+  // With operands of equal size the smaller-operand rule repeats a.
+  expect_parse(F::weak_until(a, b).to_string(Syntax::Spin), F::disj(F::until(a, b), F::always(a)));
+  expect_parse(F::strong_release(a, b).to_string(Syntax::Spin),
+               F::conj(F::release(a, b), F::eventually(a)));
+  const F ab = F::conj(a, b);
+  expect_parse(F::weak_until(ab, c).to_string(Syntax::Spin), F::release(c, F::disj(ab, c)));
+  expect_parse(F::strong_release(ab, c).to_string(Syntax::Spin), F::until(c, F::conj(ab, c)));
   expect_parse(F::lxor(a, b).to_string(Syntax::Spin), F::lnot(F::equiv(a, b)));
 }
 

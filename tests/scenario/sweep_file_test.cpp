@@ -92,6 +92,13 @@ TEST(SweepFile, BadInputNamesTheKey) {
   expect_error(kBase + "workspace: {footprint_density: 0.9}\n", "workspace.footprint_density",
                "must be in");
   expect_error(kBase + "workspace: {sides: [[2, 8]]}\n", "workspace.sides", "no side for 1");
+  // One object of radius 0.25 m at footprint 1e-6 needs a side of sqrt(pi 0.25^2 / 1e-6) = 443 m,
+  // beyond the generator's 100 m (a bound the fuzz target checks); at 1e-4 it needs 44.3 m.
+  expect_error(kBase + "workspace: {footprint_density: 0.000001}\n", "workspace.footprint_density",
+               "gives a side of 443.");
+  EXPECT_NEAR(parse_sweep_file(kBase + "workspace: {footprint_density: 0.0001}\n")
+                  .workspace.side_for(1, 0.25),
+              44.31, 0.01);
   expect_error(kBase + "workspace: {side: 10}\nseeds: 0\n", "seeds", "integer in");
   expect_error(kBase + "workspace: {side: 10}\ntime_limit: -1\n", "time_limit", "must be in");
   expect_error(kBase + "workspace: {side: 10}\nbase_seed: -1\n", "base_seed", "non-negative");
