@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets of tests/fuzz with clang (AddressSanitizer, UndefinedBehavior-
 # Sanitizer, coverage feedback) and runs each on its seed corpus (tests/fuzz/README.md).
-#   bash scripts/fuzz.sh [--seconds S | --runs N] [--jobs J] [--report FILE] [TARGET...]
+#   bash scripts/fuzz.sh [--seconds S | --runs N] [--jobs J] [--seed S] [--report FILE] [TARGET...]
 # --seconds S  each target for S seconds (default 60: the test command's short runs)
 # --runs N     each target for N executions instead (the campaigns: 10000000)
 # --jobs J     targets fuzzed at once (default: the number of cores)
 # --report F   a Markdown table of the runs (executions, time, rate, coverage, findings) in F
+# --seed S     libFuzzer's random seed (default 1: a rerun mutates the same way)
 # New inputs go to a scratch corpus (FUZZ_WORK, default /tmp/rearm-fuzz), never into the
 # repository; a finding is written there as crash-*, timeout-* or oom-* and the script exits 1.
 # Every finding, once fixed, is copied into tests/fuzz/corpus/<target>/ (found_<what>.<ext>), where
@@ -13,14 +14,15 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-seconds=60 runs="" jobs=$(nproc) report="" targets=()
+seconds=60 runs="" jobs=$(nproc) report="" seed=1 targets=()
 while (($#)); do
   case $1 in
     --seconds) seconds=$2; shift 2 ;;
     --runs) runs=$2; shift 2 ;;
     --jobs) jobs=$2; shift 2 ;;
     --report) report=$2; shift 2 ;;
-    -h|--help) sed -n 2,13p "$0"; exit 0 ;;
+    --seed) seed=$2; shift 2 ;;
+    -h|--help) sed -n 2,14p "$0"; exit 0 ;;
     -*) echo "fuzz.sh: unknown option $1" >&2; exit 2 ;;
     *) targets+=("$1"); shift ;;
   esac
@@ -46,13 +48,13 @@ fuzz_one() {
   local budget=(-max_total_time="$seconds")
   [[ -n $runs ]] && budget=(-runs="$runs")
   local rc=0
-  "$FUZZ_BUILD/bin/$t" "${budget[@]}" -timeout=5 -rss_limit_mb=2048 -max_len=8192 \
+  "$FUZZ_BUILD/bin/$t" "${budget[@]}" -seed="$seed" -timeout=5 -rss_limit_mb=2048 -max_len=8192 \
     -print_final_stats=1 -artifact_prefix="$work/" "$work/corpus" "tests/fuzz/corpus/$t" \
     >"$work/log" 2>&1 || rc=$?
   echo "$rc" >"$work/rc"
 }
 export -f fuzz_one
-export FUZZ_BUILD FUZZ_WORK seconds runs
+export FUZZ_BUILD FUZZ_WORK seconds runs seed
 printf '%s\n' "${targets[@]}" | xargs -P "$jobs" -I{} bash -c 'fuzz_one {}'
 
 status=0
@@ -69,7 +71,13 @@ for t in "${targets[@]}"; do
   if [[ $rc != 0 || $found != 0 ]]; then
     result="**exit $rc, $found finding(s)**: $(grep -m1 -E 'ERROR|property broken' "$work/log" || true)"
     status=1
-    echo "fuzz.sh: $t: exit $rc; log $work/log; inputs:" $(ls "$work" | grep -E '^(crash|timeout|oom|leak)-' || true) >&2
+    echo "fuzz.sh: $t: exit $rc; log $work/log" >&2
+    grep -m1 -B2 -A12 -E 'ERROR|property broken' "$work/log" >&2 || true
+    for input in "$work"/crash-* "$work"/timeout-* "$work"/oom-* "$work"/leak-*; do
+      [[ -f $input ]] || continue
+      echo "fuzz.sh: the input $input (first 4 KiB):" >&2
+      head -c 4096 "$input" | od -A d -t x1z -v >&2
+    done
   fi
   rate=""
   [[ -n ${secs:-} && ${secs:-0} -gt 0 ]] && rate=$((execs / secs))

@@ -544,12 +544,19 @@ std::string write_never_claim(const Automaton<Alphabet>& a) {
 
   // Spin starts a claim at its first statement, so the initial state is written first. With
   // several initial states a fresh one, visited once, takes the union of their edges.
+  // States are numbered by their place in the text (the fresh state, or the initial one, is
+  // place 0), the order read_never_claim keeps: the claim read back writes the same labels.
   const bool fresh_init = a.initial.size() > 1;
   const std::uint32_t init = a.initial.front();
+  auto place = [&](std::uint32_t q) -> std::uint32_t {
+    if (fresh_init) return q + 1;
+    if (q == init) return 0;
+    return q < init ? q + 1 : q;
+  };
   auto label = [&](std::uint32_t q) {
     const char* prefix = a.accepting[q] ? "accept_" : "T0_";
     if (!fresh_init && q == init) return std::string(prefix) + "init";
-    return std::string(prefix) + "S" + std::to_string(q);
+    return std::string(prefix) + "S" + std::to_string(place(q));
   };
   auto write_state = [&](const std::string& lbl, const std::string& comment,
                          const std::vector<Edge>& edges) {

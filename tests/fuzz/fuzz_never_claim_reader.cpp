@@ -1,7 +1,9 @@
 // Fuzz target: the never-claim reader (ltl/automaton_io.h) on any byte string. An accepted
 // automaton, written back as a never claim, reads again to an automaton that writes the same
 // claim: read-then-write is a fixed point up to comments (the writer's comments carry the names
-// the first text gave the states, e.g. accept_all, which the writer's own labels replace).
+// the first text gave the states, e.g. accept_all, which the writer's own labels replace), with
+// the propositions in the first reading's order (a claim does not declare them: a second reading
+// into a fresh alphabet orders them by first occurrence, and writes b && c as c && b).
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -32,15 +34,18 @@ std::string without_comments(const std::string& claim) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace rearm;
   std::string written;
+  ltl::GeneralAlphabet alphabet;
   try {
-    written = ltl::to_never_claim(ltl::read_never_claim(fuzz::as_text(data, size)));
+    const ltl::GeneralNba first = ltl::read_never_claim(fuzz::as_text(data, size));
+    alphabet = first.alphabet;
+    written = ltl::to_never_claim(first);
   } catch (const Error& e) {
     fuzz::require_message(e.what());
     return 0;
   }
   std::string again;
   try {
-    again = ltl::to_never_claim(ltl::read_never_claim(written));
+    again = ltl::to_never_claim(ltl::read_never_claim(written, alphabet));
   } catch (const Error& e) {
     fuzz::fuzz_require(false, "the never-claim writer's output reads again",
                        written + "\n" + e.what());

@@ -916,7 +916,9 @@ TEST(NeverClaimWriter, SeveralInitialStatesAndDeadStates) {
     EXPECT_EQ(y.num_states(), 4u) << text;
     expect_same_language(x, y, 3);
   }
-  EXPECT_NE(to_never_claim(dead).find("T0_S1:\n\tfalse;\n"), std::string::npos);
+  // Labels number the states by their place in the text: the fresh initial state is place 0,
+  // so state 1 is T0_S2.
+  EXPECT_NE(to_never_claim(dead).find("T0_S2:\n\tfalse;\n"), std::string::npos);
   GeneralNba none;
   none.alphabet = GeneralAlphabet({"a"});
   none.add_state(true);
