@@ -9,6 +9,7 @@
 
 #include "core/error.h"
 #include "core/stopwatch.h"
+#include "core/text.h"
 #include "executive/path_tracker.h"
 #include "geometry/dilation.h"
 #include "geometry/distance.h"
@@ -23,13 +24,9 @@ namespace {
 // plan, reach, align, dock, …); more means a bug, reported as stuck rather than a hang.
 constexpr int kMaxTransitionsPerTick = 64;
 
-std::string fmt(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.3f", v);
-  return buf;
+std::string point_text(const Point& p) {
+  return "(" + rearm::fixed(p.x(), 3) + ", " + rearm::fixed(p.y(), 3) + ")";
 }
-
-std::string point_text(const Point& p) { return "(" + fmt(p.x()) + ", " + fmt(p.y()) + ")"; }
 
 bool same_disks(const std::vector<geometry::Disk>& a, const std::vector<geometry::Disk>& b) {
   if (a.size() != b.size()) return false;
@@ -362,8 +359,8 @@ Executive::Advance Executive::align(Activity& a, const Pose& pose, double t) {
   }
   if (t - a.phase_start > p_.phase_timeout) {
     out.kind = Advance::kStuck;
-    out.reason =
-        "could not turn the gripper toward the object within " + fmt(p_.phase_timeout) + " s";
+    out.reason = "could not turn the gripper toward the object within " +
+                 rearm::fixed(p_.phase_timeout, 3) + " s";
     return out;
   }
   out.u = reactive::align_command(pose.psi, pose.x, m.center, p_.nav);
@@ -380,12 +377,12 @@ Executive::Advance Executive::dock(Activity& a, const Pose& pose, double t, doub
     gripper_object_ = a.object;
     a.phase = Phase::kGrip;
     a.phase_start = t;
-    a.note = "gripped at gap " + fmt(gap * 1000) + " mm";
+    a.note = "gripped at gap " + rearm::fixed(gap * 1000, 3) + " mm";
     return out;  // stand still while the gripper closes
   }
   if (t - a.phase_start > p_.phase_timeout) {
     out.kind = Advance::kStuck;
-    out.reason = "could not dock to the object within " + fmt(p_.phase_timeout) + " s";
+    out.reason = "could not dock to the object within " + rearm::fixed(p_.phase_timeout, 3) + " s";
     return out;
   }
   // Straight in, never closer than half the gap allowance in one step, steering to keep
@@ -460,7 +457,7 @@ Executive::Advance Executive::withdraw(Activity& a, const Pose& pose, double t, 
   auto done = [&](const std::string& how) {
     if (a.withdrawn > 0) {
       ++recoveries_.withdrawals;
-      a.note += "; withdrew " + fmt(a.withdrawn) + " m" + how;
+      a.note += "; withdrew " + rearm::fixed(a.withdrawn, 3) + " m" + how;
     }
     out.kind = Advance::kDone;
     out.reason = a.note;
@@ -776,7 +773,7 @@ std::optional<Executive::Advance> Executive::narrow(Activity& a, const Pose& pos
   std::optional<Advance> out =
       fix_mode_for(a, n->blocking,
                    "objects narrow the passage to x* below what the law got through (grown by " +
-                       fmt(n->slack) + " m): " + n->reason);
+                       rearm::fixed(n->slack, 3) + " m): " + n->reason);
   if (out) ++recoveries_.narrows;
   return out;
 }
@@ -811,7 +808,8 @@ std::optional<Executive::Narrowing> Executive::grown_blockers(
       for (std::size_t i = 0; i < grown.size(); ++i) {
         if ((grown[i].center - center).norm() < grown[i].radius + radius) n.blocking.push_back(i);
       }
-      n.reason = "the robot's centre lies within " + fmt(slack) + " m of their dilations";
+      n.reason =
+          "the robot's centre lies within " + rearm::fixed(slack, 3) + " m of their dilations";
     }
     return n;
   }
@@ -872,7 +870,7 @@ std::optional<Executive::Advance> Executive::fragment_blockers(Activity& a, doub
       out = fix_mode_for(a, n->blocking,
                          "objects narrow the way to x* beside visible unknown obstacles (grown "
                          "by " +
-                             fmt(n->slack) + " m): " + n->reason);
+                             rearm::fixed(n->slack, 3) + " m): " + n->reason);
     }
   }
   if (out) ++recoveries_.fragment_fixes;
@@ -1063,7 +1061,7 @@ Executive::Advance Executive::command(Activity& a, const Pose& pose, double rho,
 std::optional<std::string> Executive::law_invariant_violation() const {
   if (!law_command_) return std::nullopt;
   const reactive::ReactiveController::LawSample& s = controller_.last_law_sample();
-  if (!(s.det > 0)) return "det Dh = " + fmt(s.det) + " <= 0 at x = " + point_text(s.x);
+  if (!(s.det > 0)) return "det Dh = " + rearm::fixed(s.det, 3) + " <= 0 at x = " + point_text(s.x);
   if (std::optional<std::string> why =
           reactive::outside_model_freespace(controller_.diffeo().model(), s.y)) {
     return "the law's model point of x = " + point_text(s.x) + ": " + *why;

@@ -1,21 +1,13 @@
 #include "executive/progress_monitor.h"
 
 #include <cmath>
-#include <cstdio>
 #include <utility>
 
 #include "core/error.h"
+#include "core/text.h"
 
 namespace rearm::executive {
-namespace {
-
-std::string fmt(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.3g", v);
-  return buf;
-}
-
-}  // namespace
+namespace {}  // namespace
 
 void validate(const ProgressParams& p) {
   const std::pair<const char*, double> fields[] = {
@@ -58,8 +50,8 @@ std::optional<std::string> ProgressMonitor::observe(double t, const reactive::Po
     best_t_ = t;
   }
   if (t - best_t_ > p_.stall_time) {
-    return "no progress toward the target for " + fmt(t - best_t_) + " s (best distance " +
-           fmt(best_) + " m)";
+    return "no progress toward the target for " + significant(t - best_t_, 3) +
+           " s (best distance " + significant(best_, 3) + " m)";
   }
   for (const Record& r : records_) {
     if (t - r.t < p_.revisit_min_age) break;  // records are in time order
@@ -69,9 +61,10 @@ std::optional<std::string> ProgressMonitor::observe(double t, const reactive::Po
       continue;
     }
     if (best_ > r.best - p_.progress_step) {
-      return "revisited the configuration (" + fmt(pose.x.x()) + ", " + fmt(pose.x.y()) + ", " +
-             fmt(pose.psi) + " rad) of t = " + fmt(r.t) + " s without coming closer to the " +
-             "target (distance " + fmt(distance) + " m)";
+      return "revisited the configuration (" + significant(pose.x.x(), 3) + ", " +
+             significant(pose.x.y(), 3) + ", " + significant(pose.psi, 3) +
+             " rad) of t = " + significant(r.t, 3) + " s without coming closer to the " +
+             "target (distance " + significant(distance, 3) + " m)";
     }
   }
   if (records_.empty() || t - records_.back().t >= p_.revisit_period) {

@@ -3,12 +3,12 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 #include <optional>
 #include <string>
 
 #include "core/error.h"
+#include "core/text.h"
 #include "ltl/parser.h"
 #include "perception/semantic_map.h"
 #include "symbolic/mission_controller.h"
@@ -22,25 +22,21 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-std::string fmt(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", v);
-  return buf;
-}
-
 // TaskOptions::check_invariants: throws InvariantViolation on the first broken invariant.
-void check_tick(const Command& cmd, const Plant& plant, const Executive& exec, double t) {
+// `clearance` is the plant's at this tick (the command has not acted yet).
+void check_tick(const Command& cmd, double clearance, const Executive& exec, double t) {
   auto fail = [&](const std::string& what) {
-    throw InvariantViolation("invariant broken at t = " + fmt(t) + " s during " +
+    throw InvariantViolation("invariant broken at t = " + significant(t, 6) + " s during " +
                              exec.current_action() + ": " + what);
   };
   if (!std::isfinite(cmd.u.v) || !std::isfinite(cmd.u.omega)) {
-    fail("non-finite command (v, omega) = (" + fmt(cmd.u.v) + ", " + fmt(cmd.u.omega) + ")");
+    fail("non-finite command (v, omega) = (" + significant(cmd.u.v, 6) + ", " +
+         significant(cmd.u.omega, 6) + ")");
   }
-  const double clearance = plant.clearance();
   if (!(clearance >= -kInvariantSlop)) {
     fail("the robot or the object it holds overlaps an obstacle, an object or the boundary by " +
-         fmt(-clearance) + " m (beyond the slop " + fmt(kInvariantSlop) + " m)");
+         significant(-clearance, 6) + " m (beyond the slop " + significant(kInvariantSlop, 6) +
+         " m)");
   }
   if (std::optional<std::string> why = exec.law_invariant_violation()) fail(*why);
 }
@@ -78,7 +74,8 @@ TaskResult run_task(const TaskSpec& spec, Plant& plant, const TaskOptions& o) {
   const long max_steps = static_cast<long>(std::ceil(o.max_time / o.dt));
   for (long k = 0;; ++k) {
     const Pose pose = plant.pose();
-    res.min_clearance = std::min(res.min_clearance, plant.clearance());
+    const double clearance = plant.clearance();
+    res.min_clearance = std::min(res.min_clearance, clearance);
     if (o.record_path) {
       res.path.push_back(pose);
       for (std::size_t i = 0; i < n; ++i) res.object_paths[i].push_back(plant.object_center(i));
@@ -91,7 +88,7 @@ TaskResult run_task(const TaskSpec& spec, Plant& plant, const TaskOptions& o) {
     const Clock::time_point c0 = Clock::now();
     const Command cmd = exec.step(pose, t, o.dt);
     res.controller_time += seconds_since(c0);
-    if (o.check_invariants) check_tick(cmd, plant, exec, t);
+    if (o.check_invariants) check_tick(cmd, clearance, exec, t);
     // The gripper acts; perception records what it holds (a failed grip holds nothing, and the
     // executive ends the grasp stuck on the next tick).
     if (cmd.gripper == GripperAction::kClose) {

@@ -73,7 +73,7 @@ std::vector<std::string> corpus() {
 // lists the names it discovered at build time, so leaving them out of the list would pass them
 // without running anything).
 bool runs_at_this_scale(const std::string& name) {
-  const std::vector<std::string> all = corpus();
+  static const std::vector<std::string> all = corpus();  // the directories, read once
   const std::size_t keep = test_support::scaled(all.size());
   if (keep >= all.size()) return true;
   const std::size_t k = all.size() / keep;
