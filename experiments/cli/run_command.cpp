@@ -38,67 +38,62 @@ constexpr const char* kUsage =
     "Exit: 0 when the task completed, 1 when it ended infeasible, stuck or by timeout,\n"
     "2 for bad usage or an invalid scenario.\n";
 
-}  // namespace
-
-int run_run(const std::vector<std::string>& args) {
-  std::string path, out_dir;
+// The command line of `rearm run`, parsed.
+struct RunArgs {
+  std::string path, out_dir, variant;
   experiment::RunOptions options;
   int stride = 10;
-  bool plot = true, animation = true;
-  std::string variant;
+  bool plot = true, animation = true, help = false;
+};
+
+RunArgs parse_run_args(const std::vector<std::string>& args) {
+  RunArgs r;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     if (a == "--help" || a == "-h") {
-      std::printf("%s", kUsage);
-      return kExitOk;
+      r.help = true;
+      return r;
     } else if (a == "--out") {
-      out_dir = option_value(args, i);
+      r.out_dir = option_value(args, i);
     } else if (a == "--seed") {
-      options.seed = parse_count(a, option_value(args, i));
+      r.options.seed = parse_count(a, option_value(args, i));
     } else if (a == "--stride") {
       const std::uint64_t s = parse_count(a, option_value(args, i));
       if (s < 1 || s > 100000) throw Error("--stride must be in [1, 100000]");
-      stride = static_cast<int>(s);
+      r.stride = static_cast<int>(s);
     } else if (a == "--plant") {
       const std::string& v = option_value(args, i);
       if (v == "box2d") {
-        options.plant = experiment::PlantKind::kBox2d;
+        r.options.plant = experiment::PlantKind::kBox2d;
       } else if (v == "kinematic") {
-        options.plant = experiment::PlantKind::kKinematic;
+        r.options.plant = experiment::PlantKind::kKinematic;
       } else {
         throw Error("--plant expects box2d or kinematic, got '" + v + "'");
       }
     } else if (a == "--variant") {
-      variant = option_value(args, i);
-      if (variant != "paper" && variant != "robust") {
-        throw Error("--variant expects paper or robust, got '" + variant + "'");
+      r.variant = option_value(args, i);
+      if (r.variant != "paper" && r.variant != "robust") {
+        throw Error("--variant expects paper or robust, got '" + r.variant + "'");
       }
     } else if (a == "--checked") {
-      options.checked = true;
+      r.options.checked = true;
     } else if (a == "--no-plot") {
-      plot = false;
+      r.plot = false;
     } else if (a == "--no-animation") {
-      animation = false;
+      r.animation = false;
     } else if (a.rfind("--", 0) == 0) {
       throw Error("unknown option " + a + "\n" + kUsage);
-    } else if (path.empty()) {
-      path = a;
+    } else if (r.path.empty()) {
+      r.path = a;
     } else {
       throw Error("one scenario file expected, got also '" + a + "'");
     }
   }
-  if (path.empty()) throw Error(std::string("missing SCENARIO.yaml\n") + kUsage);
-  scenario::Scenario s = scenario::load_scenario(path);
-  if (!variant.empty()) {
-    scenario::set_variant(s.controller, variant);
-  }
-  if (out_dir.empty()) out_dir = (fs::path("out") / s.name).string();
+  if (r.path.empty()) throw Error(std::string("missing SCENARIO.yaml\n") + kUsage);
+  return r;
+}
 
-  const experiment::RunRecord r = experiment::run_scenario(s, options);
-  const fs::path metrics = fs::path(out_dir) / "metrics.json";
-  const fs::path trajectory = fs::path(out_dir) / "trajectory.json";
-  write_file_atomically(metrics.string(), experiment::metrics_json(s, r));
-  write_file_atomically(trajectory.string(), experiment::trajectory_json(s, r, stride));
+void print_summary(const scenario::Scenario& s, const experiment::RunRecord& r) {
   const executive::TaskResult& t = r.result;
   std::printf("%s: %s (%s)\n", s.name.c_str(), executive::to_string(t.status), t.reason.c_str());
   std::printf(
@@ -106,42 +101,67 @@ int run_run(const std::vector<std::string>& args) {
       "m, %d Fix mode entries, %zu actions\n",
       t.sim_time, t.wall_time, r.real_time_factor(), t.collisions, t.min_clearance,
       t.fix_mode_entries, t.actions.size());
-  if (s.controller.variant == "robust") {
-    std::printf(
-        "  recoveries (%s variant): %d guide paths, %d back-ups, %d singular switches, "
-        "%d convex fallbacks, %d restores, %d early releases, %d withdrawals, %d release "
-        "points, %d early docks, %d turns toward the goal, %d narrow passages cleared, %d "
-        "ways cleared beside unknown obstacles, %d drops in a pocket, %d drop points chosen "
-        "again\n",
-        s.controller.variant.c_str(), t.recoveries.guides, t.recoveries.back_outs,
-        t.recoveries.singular, t.recoveries.fallbacks, t.recoveries.restores,
-        t.recoveries.early_releases, t.recoveries.withdrawals, t.recoveries.release_points,
-        t.recoveries.early_docks, t.recoveries.faces, t.recoveries.narrows,
-        t.recoveries.fragment_fixes, t.recoveries.pocket_drops, t.recoveries.redrops);
-  }
-  std::printf("wrote %s and %s\n", metrics.string().c_str(), trajectory.string().c_str());
+  if (s.controller.variant != "robust") return;
+  std::printf(
+      "  recoveries (%s variant): %d guide paths, %d back-ups, %d singular switches, "
+      "%d convex fallbacks, %d restores, %d early releases, %d withdrawals, %d release "
+      "points, %d early docks, %d turns toward the goal, %d narrow passages cleared, %d "
+      "ways cleared beside unknown obstacles, %d drops in a pocket, %d drop points chosen "
+      "again\n",
+      s.controller.variant.c_str(), t.recoveries.guides, t.recoveries.back_outs,
+      t.recoveries.singular, t.recoveries.fallbacks, t.recoveries.restores,
+      t.recoveries.early_releases, t.recoveries.withdrawals, t.recoveries.release_points,
+      t.recoveries.early_docks, t.recoveries.faces, t.recoveries.narrows,
+      t.recoveries.fragment_fixes, t.recoveries.pocket_drops, t.recoveries.redrops);
+}
 
-  if (plot) {
-    const std::string py = find_python({"matplotlib", "PIL"});
-    const fs::path script = plot_script("run.py");
-    if (py.empty()) {
-      std::fprintf(stderr,
-                   "rearm run: warning: no python3 with matplotlib and pillow found; the figure "
-                   "and the animation were not drawn (the JSON files are written)\n");
-    } else if (!fs::exists(script)) {
-      std::fprintf(stderr, "rearm run: warning: plotting script %s not found\n",
-                   script.string().c_str());
-    } else {
-      std::string cmd = shell_quote(py) + " " + shell_quote(script.string()) + " " +
-                        shell_quote(trajectory.string()) + " " + shell_quote(out_dir);
-      if (!animation) cmd += " --no-animation";
-      if (std::system(cmd.c_str()) != 0) {
-        std::fprintf(stderr, "rearm run: plotting failed: %s\n", cmd.c_str());
-        return kExitFailure;
-      }
-    }
+// Draws the figure (and the animation) with experiments/plot/run.py; false when the script ran
+// and failed (a missing python or script is a warning only).
+bool draw(const fs::path& trajectory, const std::string& out_dir, bool animation) {
+  const std::string py = find_python({"matplotlib", "PIL"});
+  const fs::path script = plot_script("run.py");
+  if (py.empty()) {
+    std::fprintf(stderr,
+                 "rearm run: warning: no python3 with matplotlib and pillow found; the figure "
+                 "and the animation were not drawn (the JSON files are written)\n");
+    return true;
   }
-  return t.status == executive::TaskStatus::kCompleted ? kExitOk : kExitFailure;
+  if (!fs::exists(script)) {
+    std::fprintf(stderr, "rearm run: warning: plotting script %s not found\n",
+                 script.string().c_str());
+    return true;
+  }
+  std::string cmd = shell_quote(py) + " " + shell_quote(script.string()) + " " +
+                    shell_quote(trajectory.string()) + " " + shell_quote(out_dir);
+  if (!animation) cmd += " --no-animation";
+  if (std::system(cmd.c_str()) != 0) {
+    std::fprintf(stderr, "rearm run: plotting failed: %s\n", cmd.c_str());
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+int run_run(const std::vector<std::string>& args) {
+  RunArgs a = parse_run_args(args);
+  if (a.help) {
+    std::printf("%s", kUsage);
+    return kExitOk;
+  }
+  scenario::Scenario s = scenario::load_scenario(a.path);
+  if (!a.variant.empty()) scenario::set_variant(s.controller, a.variant);
+  if (a.out_dir.empty()) a.out_dir = (fs::path("out") / s.name).string();
+
+  const experiment::RunRecord r = experiment::run_scenario(s, a.options);
+  const fs::path metrics = fs::path(a.out_dir) / "metrics.json";
+  const fs::path trajectory = fs::path(a.out_dir) / "trajectory.json";
+  write_file_atomically(metrics.string(), experiment::metrics_json(s, r));
+  write_file_atomically(trajectory.string(), experiment::trajectory_json(s, r, a.stride));
+  print_summary(s, r);
+  std::printf("wrote %s and %s\n", metrics.string().c_str(), trajectory.string().c_str());
+  if (a.plot && !draw(trajectory, a.out_dir, a.animation)) return kExitFailure;
+  return r.result.status == executive::TaskStatus::kCompleted ? kExitOk : kExitFailure;
 }
 
 }  // namespace rearm::cli
