@@ -176,6 +176,150 @@ std::vector<char> exhaustive_truth(const Formula& f, const std::vector<std::stri
   return truth;
 }
 
+// The three checks of one formula f, applied to an automaton: true = found wrong. Witnesses
+// that contradict the evaluator (spin or the reader wrong) are counted in `bogus` and reported.
+struct Checks {
+  const Formula& f;
+  const Formula& negation;
+  const std::vector<std::string>& aps;
+  const GeneralNba& spin_neg;
+  std::vector<Lasso> guided;  // words of spin(φ)'s accepting runs that satisfy φ
+  std::size_t& bogus;
+
+  bool words(const GeneralNba& m, Rng& wr) const {
+    for (std::size_t j = 0; j < kRandomWords; ++j) {
+      const Lasso w = random_lasso(wr, aps);
+      if (accepts(m, w) != evaluate(f, w)) return true;
+    }
+    return false;
+  }
+  bool spin(const GeneralNba& m) const {
+    const auto wit = find_common_word(m, spin_neg);
+    if (wit && evaluate(f, wit->word)) {
+      ++bogus;  // spin(¬φ) accepted a model of φ: spin or reader wrong
+      ADD_FAILURE() << "spin(" << negation.to_string() << ") accepts " << wit->word.to_string()
+                    << ", a model of the formula";
+    }
+    return wit.has_value();
+  }
+  bool guided_words(const GeneralNba& m) const {
+    for (const Lasso& w : guided) {
+      if (!accepts(m, w)) return true;
+    }
+    return false;
+  }
+};
+
+// Words of spin(φ)'s accepting runs, kept where the evaluator agrees they satisfy φ.
+std::vector<Lasso> guided_words(const Formula& f, const GeneralNba& spin_pos, std::size_t i,
+                                std::size_t& bogus) {
+  Rng guided_rng = Rng::derive(0x9a1de, i);
+  std::vector<Lasso> guided;
+  for (Lasso& w : sample_accepted_lassos(spin_pos, guided_rng, kGuidedWords)) {
+    if (!evaluate(f, w)) {
+      ++bogus;  // spin(φ) accepted a word violating φ: spin or reader wrong
+      ADD_FAILURE() << "spin(" << f.to_string() << ") accepts " << w.to_string()
+                    << ", which violates the formula";
+      continue;
+    }
+    guided.push_back(std::move(w));
+  }
+  return guided;
+}
+
+// A mutant no check detected, classified by exhaustive comparison: accepting a word outside the
+// formula (unsound) must never escape, because the spin product is an exact check of that
+// direction; rejecting a model (incomplete) is only checked on words, so a rare escape is
+// possible and counted in `missed_incomplete`.
+void classify_undetected(const Formula& f, const std::vector<std::string>& aps,
+                         const std::vector<char>& truth, const GeneralNba& m, std::size_t kind,
+                         KindTally& t, std::size_t& missed_incomplete) {
+  std::size_t idx = 0;
+  std::optional<Lasso> over, under;
+  for_each_lasso(aps, kExhaustivePrefix, kExhaustiveLoop, false, [&](const Lasso& w) {
+    const bool model = truth[idx++] != 0;
+    const bool acc = accepts(m, w);
+    if (acc && !model && !over) over = w;
+    if (!acc && model && !under) under = w;
+    return !over;
+  });
+  if (over) {
+    ++t.missed;
+    ADD_FAILURE() << "MISSED unsound mutant (" << kKindNames[kind] << ") of " << f.to_string()
+                  << ": accepts " << over->to_string();
+  } else if (under) {
+    ++t.missed;
+    ++missed_incomplete;
+    std::printf("[mutation] undetected incomplete mutant (%s) of %s: rejects %s\n",
+                kKindNames[kind], f.to_string().c_str(), under->to_string().c_str());
+  } else {
+    ++t.equivalent;
+  }
+}
+
+// kMutantsPerKind mutants of every kind of the translation `a` of formula i, tallied.
+void mutate_and_check(const GeneralNba& a, const Checks& checks, std::size_t i, Rng& rng,
+                      std::array<KindTally, kNumKinds>& tally, std::size_t& missed_incomplete) {
+  std::optional<std::vector<char>> truth;  // computed on the first undetected mutant
+  for (std::size_t k = 0; k < kNumKinds; ++k) {
+    for (std::size_t n = 0; n < kMutantsPerKind; ++n) {
+      const std::optional<GeneralNba> m = mutate(a, static_cast<Kind>(k), rng);
+      if (!m) continue;
+      KindTally& t = tally[k];
+      ++t.mutants;
+      Rng wr = Rng::derive(i, k * 16 + n);
+      const bool by_words = checks.words(*m, wr);
+      const bool by_spin = checks.spin(*m);
+      const bool by_guided = checks.guided_words(*m);
+      t.by_words += by_words;
+      t.by_spin += by_spin;
+      t.by_guided += by_guided;
+      if (by_words || by_spin || by_guided) {
+        ++t.detected;
+        continue;
+      }
+      if (!truth) truth = exhaustive_truth(checks.f, checks.aps);
+      classify_undetected(checks.f, checks.aps, *truth, *m, k, t, missed_incomplete);
+    }
+  }
+}
+
+// Prints the table of detections per kind; returns the totals.
+KindTally print_tallies(const std::array<KindTally, kNumKinds>& tally) {
+  KindTally all;
+  std::printf("[mutation] %-18s %7s %9s %8s %10s %9s %10s %6s %9s\n", "kind", "mutants", "by words",
+              "by spin", "spin words", "detected", "equivalent", "missed", "rate");
+  auto row = [](const char* name, const KindTally& t) {
+    std::printf(
+        "[mutation] %-18s %7zu %9zu %8zu %10zu %9zu %10zu %6zu %8.1f%%\n", name, t.mutants,
+        t.by_words, t.by_spin, t.by_guided, t.detected, t.equivalent, t.missed,
+        t.mutants ? 100.0 * static_cast<double>(t.detected) / static_cast<double>(t.mutants) : 0.0);
+  };
+  for (std::size_t k = 0; k < kNumKinds; ++k) {
+    const KindTally& t = tally[k];
+    row(kKindNames[k], t);
+    all.mutants += t.mutants;
+    all.by_words += t.by_words;
+    all.by_spin += t.by_spin;
+    all.by_guided += t.by_guided;
+    all.detected += t.detected;
+    all.equivalent += t.equivalent;
+    all.missed += t.missed;
+  }
+  row("all", all);
+  const std::size_t wrong = all.mutants - all.equivalent;
+  auto share = [&](std::size_t x) {
+    return 100.0 * static_cast<double>(x) / static_cast<double>(std::max<std::size_t>(wrong, 1));
+  };
+  std::printf(
+      "[mutation] of %zu non-equivalent mutants: random words alone missed %zu "
+      "(%.1f%%), the spin product alone %zu (%.1f%%), spin's words alone %zu (%.1f%%), "
+      "all checks together %zu\n",
+      wrong, wrong - all.by_words, share(wrong - all.by_words), wrong - all.by_spin,
+      share(wrong - all.by_spin), wrong - all.by_guided, share(wrong - all.by_guided), all.missed);
+  return all;
+}
+
 TEST(Mutation, ChecksDetectEveryNonEquivalentMutant) {
   if (!spin_installed()) {
     std::cerr << "\n*** spin is not installed: the mutation analysis needs spin's automata; "
@@ -230,135 +374,31 @@ TEST(Mutation, ChecksDetectEveryNonEquivalentMutant) {
                     << ") or spin(" << f.to_string() << "): " << e.what();
       continue;
     }
-    Rng guided_rng = Rng::derive(0x9a1de, i);
-    std::vector<Lasso> guided;
-    for (Lasso& w : sample_accepted_lassos(spin_pos, guided_rng, kGuidedWords)) {
-      if (!evaluate(f, w)) {
-        ++bogus_witnesses;  // spin(φ) accepted a word violating φ: spin or reader wrong
-        ADD_FAILURE() << "spin(" << f.to_string() << ") accepts " << w.to_string()
-                      << ", which violates the formula";
-        continue;
-      }
-      guided.push_back(std::move(w));
-    }
-    auto guided_detect = [&](const GeneralNba& m) {
-      for (const Lasso& w : guided) {
-        if (!accepts(m, w)) return true;
-      }
-      return false;
-    };
-    // Each check applied to an automaton; true = the automaton was found wrong.
-    auto words_detect = [&](const GeneralNba& m, Rng& wr) {
-      for (std::size_t j = 0; j < kRandomWords; ++j) {
-        const Lasso w = random_lasso(wr, aps);
-        if (accepts(m, w) != evaluate(f, w)) return true;
-      }
-      return false;
-    };
-    auto spin_detect = [&](const GeneralNba& m) {
-      const auto wit = find_common_word(m, spin_neg);
-      if (wit && evaluate(f, wit->word)) {
-        ++bogus_witnesses;  // spin(¬φ) accepted a model of φ: spin or reader wrong
-        ADD_FAILURE() << "spin(" << negations[i].to_string() << ") accepts "
-                      << wit->word.to_string() << ", a model of the formula";
-      }
-      return wit.has_value();
-    };
-    // The unmutated automaton must pass both (else the translator is wrong: report).
-    {
-      Rng wr(i);
-      if (words_detect(a, wr) || spin_detect(a) || guided_detect(a)) {
-        ADD_FAILURE() << "the translation itself fails the checks: " << f.to_string();
-        continue;
-      }
+    const Checks checks{f,
+                        negations[i],
+                        aps,
+                        spin_neg,
+                        guided_words(f, spin_pos, i, bogus_witnesses),
+                        bogus_witnesses};
+    // The unmutated automaton must pass every check (else the translator is wrong: report).
+    Rng wr(i);
+    if (checks.words(a, wr) || checks.spin(a) || checks.guided_words(a)) {
+      ADD_FAILURE() << "the translation itself fails the checks: " << f.to_string();
+      continue;
     }
     ++used_formulas;
-    std::optional<std::vector<char>> truth;  // computed on the first undetected mutant
-    for (std::size_t k = 0; k < kNumKinds; ++k) {
-      for (std::size_t n = 0; n < kMutantsPerKind; ++n) {
-        const std::optional<GeneralNba> m = mutate(a, static_cast<Kind>(k), rng);
-        if (!m) continue;
-        KindTally& t = tally[k];
-        ++t.mutants;
-        Rng wr = Rng::derive(i, k * 16 + n);
-        const bool by_words = words_detect(*m, wr);
-        const bool by_spin = spin_detect(*m);
-        const bool by_guided = guided_detect(*m);
-        t.by_words += by_words;
-        t.by_spin += by_spin;
-        t.by_guided += by_guided;
-        if (by_words || by_spin || by_guided) {
-          ++t.detected;
-          continue;
-        }
-        if (!truth) truth = exhaustive_truth(f, aps);
-        // Classify the undetected mutant by exhaustive comparison: accepting a word outside
-        // the formula (unsound) must never escape, because the spin product is an exact
-        // check of that direction; rejecting a model (incomplete) is only checked on words,
-        // so a rare escape is possible and counted.
-        std::size_t idx = 0;
-        std::optional<Lasso> over, under;
-        for_each_lasso(aps, kExhaustivePrefix, kExhaustiveLoop, false, [&](const Lasso& w) {
-          const bool model = (*truth)[idx++] != 0;
-          const bool acc = accepts(*m, w);
-          if (acc && !model && !over) over = w;
-          if (!acc && model && !under) under = w;
-          return !over;
-        });
-        if (over) {
-          ++t.missed;
-          ADD_FAILURE() << "MISSED unsound mutant (" << kKindNames[k] << ") of " << f.to_string()
-                        << ": accepts " << over->to_string();
-        } else if (under) {
-          ++t.missed;
-          ++missed_incomplete;
-          std::printf("[mutation] undetected incomplete mutant (%s) of %s: rejects %s\n",
-                      kKindNames[k], f.to_string().c_str(), under->to_string().c_str());
-        } else {
-          ++t.equivalent;
-        }
-      }
-    }
+    mutate_and_check(a, checks, i, rng, tally, missed_incomplete);
   }
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-
-  KindTally all;
   std::printf(
       "[mutation] %zu formulas used (%zu skipped for spin timeouts, %zu without "
       "propositions), %zu random words per mutant, exhaustive |u|<=%zu |v|<=%zu, "
       "%.1f s\n",
       used_formulas, skipped_timeouts, skipped_no_aps, kRandomWords, kExhaustivePrefix,
       kExhaustiveLoop, seconds);
-  std::printf("[mutation] %-18s %7s %9s %8s %10s %9s %10s %6s %9s\n", "kind", "mutants", "by words",
-              "by spin", "spin words", "detected", "equivalent", "missed", "rate");
-  for (std::size_t k = 0; k < kNumKinds; ++k) {
-    const KindTally& t = tally[k];
-    std::printf(
-        "[mutation] %-18s %7zu %9zu %8zu %10zu %9zu %10zu %6zu %8.1f%%\n", kKindNames[k], t.mutants,
-        t.by_words, t.by_spin, t.by_guided, t.detected, t.equivalent, t.missed,
-        t.mutants ? 100.0 * static_cast<double>(t.detected) / static_cast<double>(t.mutants) : 0.0);
-    all.mutants += t.mutants;
-    all.by_words += t.by_words;
-    all.by_spin += t.by_spin;
-    all.by_guided += t.by_guided;
-    all.detected += t.detected;
-    all.equivalent += t.equivalent;
-    all.missed += t.missed;
-  }
+  const KindTally all = print_tallies(tally);
   const std::size_t wrong = all.mutants - all.equivalent;
-  std::printf("[mutation] %-18s %7zu %9zu %8zu %10zu %9zu %10zu %6zu %8.1f%%\n", "all", all.mutants,
-              all.by_words, all.by_spin, all.by_guided, all.detected, all.equivalent, all.missed,
-              100.0 * static_cast<double>(all.detected) / static_cast<double>(all.mutants));
-  auto share = [&](std::size_t x) {
-    return 100.0 * static_cast<double>(x) / static_cast<double>(std::max<std::size_t>(wrong, 1));
-  };
-  std::printf(
-      "[mutation] of %zu non-equivalent mutants: random words alone missed %zu "
-      "(%.1f%%), the spin product alone %zu (%.1f%%), spin's words alone %zu (%.1f%%), "
-      "all checks together %zu\n",
-      wrong, wrong - all.by_words, share(wrong - all.by_words), wrong - all.by_spin,
-      share(wrong - all.by_spin), wrong - all.by_guided, share(wrong - all.by_guided), all.missed);
 
   EXPECT_GE(used_formulas, num_formulas * 3 / 4);
   // Every unsound mutant is caught (exact check); incomplete ones escape at most rarely.

@@ -84,6 +84,60 @@ TEST(SpinRunner, RunsSpinAndReportsFailuresAndTimeouts) {
   EXPECT_LT(s, 3.0) << "the wall-clock bound was not enforced";
 }
 
+// Disagreements found, by whom the evaluator blames, and the guided words checked.
+struct Blame {
+  std::size_t ours_wrong = 0, spin_wrong = 0, guided_checks = 0;
+  bool report() const { return ours_wrong + spin_wrong <= kMaxReported; }
+};
+
+// The exact check: ours(φ) and spin(¬φ) accept no common word; for a common word the evaluator
+// says which automaton is wrong.
+void product_check(const Formula& ours_f, const Formula& spin_f, const ltl::GeneralNba& ours,
+                   const ltl::GeneralNba& theirs, Blame& blame) {
+  const auto wit = find_common_word(ours, theirs);
+  if (!wit) return;
+  const bool satisfies_ours = evaluate(ours_f, wit->word);
+  (satisfies_ours ? blame.spin_wrong : blame.ours_wrong) += 1;
+  if (!blame.report()) return;
+  ADD_FAILURE() << "common word of ours(" << ours_f.to_string() << ") and spin("
+                << spin_f.to_string(ltl::Syntax::Spin) << "): " << wit->word.to_string()
+                << "; the word " << (satisfies_ours ? "satisfies" : "violates")
+                << " the formula we translated, so "
+                << (satisfies_ours ? "spin's automaton or the never-claim reader"
+                                   : "OUR TRANSLATION")
+                << " is wrong (ours: " << ours.num_states()
+                << " states, spin: " << theirs.num_states() << " states)\n"
+                << wit->to_string();
+}
+
+// The other inclusion, by proposal: words of spin's automaton for the same formula must be
+// accepted by ours whenever the evaluator confirms them.
+void guided_check(const Formula& ours_f, const ltl::GeneralNba& ours, const SpinRun& same,
+                  std::size_t k, Blame& blame) {
+  if (same.status != SpinRun::Status::kOk) return;
+  ltl::GeneralNba spin_same;
+  try {
+    spin_same = ltl::read_never_claim(same.never_claim, ltl::GeneralAlphabet());
+  } catch (const Error&) {
+    return;  // counted when the partner job is checked
+  }
+  Rng word_rng = Rng::derive(0x5a3e, k);
+  for (const Lasso& w : sample_accepted_lassos(spin_same, word_rng, kGuidedWords)) {
+    ++blame.guided_checks;
+    if (!evaluate(ours_f, w)) {
+      ++blame.spin_wrong;
+      ADD_FAILURE() << "spin(" << ours_f.to_string(ltl::Syntax::Spin) << ") accepts "
+                    << w.to_string() << ", which violates the formula";
+    } else if (!accepts(ours, w)) {
+      ++blame.ours_wrong;
+      if (blame.report()) {
+        ADD_FAILURE() << "OUR TRANSLATION of " << ours_f.to_string() << " rejects " << w.to_string()
+                      << ", a model of the formula (from spin's automaton)";
+      }
+    }
+  }
+}
+
 TEST(SpinCrosscheck, OurAutomataAndSpinsHaveNoCommonWordWithTheNegation) {
   if (!spin_installed()) {
     skip_loudly();
@@ -107,7 +161,7 @@ TEST(SpinCrosscheck, OurAutomataAndSpinsHaveNoCommonWordWithTheNegation) {
   const double spin_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::size_t timeouts = 0, spin_failures = 0, reader_errors = 0, checks = 0;
-  std::size_t ours_wrong = 0, spin_wrong = 0, guided_checks = 0;
+  Blame blame;
   const std::size_t calls = runs.size();
   std::vector<char> checked(jobs.size(), 0);
   for (std::size_t k = 0; k < jobs.size(); ++k) {
@@ -136,49 +190,8 @@ TEST(SpinCrosscheck, OurAutomataAndSpinsHaveNoCommonWordWithTheNegation) {
     }
     ++checks;
     checked[k] = 1;
-    const auto wit = find_common_word(ours, theirs);
-    if (wit) {
-      // A word both accept: the evaluator says which automaton is wrong.
-      const bool satisfies_ours = evaluate(ours_f, wit->word);
-      (satisfies_ours ? spin_wrong : ours_wrong) += 1;
-      if (ours_wrong + spin_wrong <= kMaxReported) {
-        ADD_FAILURE() << "common word of ours(" << ours_f.to_string() << ") and spin("
-                      << spin_f.to_string(ltl::Syntax::Spin) << "): " << wit->word.to_string()
-                      << "; the word " << (satisfies_ours ? "satisfies" : "violates")
-                      << " the formula we translated, so "
-                      << (satisfies_ours ? "spin's automaton or the never-claim reader"
-                                         : "OUR TRANSLATION")
-                      << " is wrong (ours: " << ours.num_states()
-                      << " states, spin: " << theirs.num_states() << " states)\n"
-                      << wit->to_string();
-      }
-    }
-    // The other inclusion, by proposal: words of spin's automaton for the same formula
-    // (the partner job's run) must be accepted by ours whenever the evaluator confirms them.
-    const SpinRun& same = runs[k ^ 1];
-    if (same.status != SpinRun::Status::kOk) continue;
-    ltl::GeneralNba spin_same;
-    try {
-      spin_same = ltl::read_never_claim(same.never_claim, ltl::GeneralAlphabet());
-    } catch (const Error&) {
-      continue;  // counted when job k ^ 1 is checked
-    }
-    Rng word_rng = Rng::derive(0x5a3e, k);
-    for (const Lasso& w : sample_accepted_lassos(spin_same, word_rng, kGuidedWords)) {
-      ++guided_checks;
-      const bool truth = evaluate(ours_f, w);
-      if (!truth) {
-        ++spin_wrong;
-        ADD_FAILURE() << "spin(" << ours_f.to_string(ltl::Syntax::Spin) << ") accepts "
-                      << w.to_string() << ", which violates the formula";
-      } else if (!accepts(ours, w)) {
-        ++ours_wrong;
-        if (ours_wrong + spin_wrong <= kMaxReported) {
-          ADD_FAILURE() << "OUR TRANSLATION of " << ours_f.to_string() << " rejects "
-                        << w.to_string() << ", a model of the formula (from spin's automaton)";
-        }
-      }
-    }
+    product_check(ours_f, spin_f, ours, theirs, blame);
+    guided_check(ours_f, ours, runs[k ^ 1], k, blame);  // the partner job: spin(φ) itself
   }
   std::size_t both_directions = 0;
   for (std::size_t i = 0; i < num_formulas; ++i)
@@ -189,12 +202,12 @@ TEST(SpinCrosscheck, OurAutomataAndSpinsHaveNoCommonWordWithTheNegation) {
             << " checked in both directions), " << calls << " spin calls, " << timeouts
             << " timed out (skipped, bound " << kSpinTimeoutSeconds << " s), " << spin_failures
             << " spin failures, " << reader_errors << " reader errors, " << checks
-            << " exact product checks, " << guided_checks
-            << " words of spin's automata checked on ours, " << ours_wrong
-            << " disagreements blaming ours, " << spin_wrong << " blaming spin/reader; spin "
+            << " exact product checks, " << blame.guided_checks
+            << " words of spin's automata checked on ours, " << blame.ours_wrong
+            << " disagreements blaming ours, " << blame.spin_wrong << " blaming spin/reader; spin "
             << spin_seconds << " s, total " << seconds << " s\n";
-  EXPECT_EQ(ours_wrong, 0u);
-  EXPECT_EQ(spin_wrong, 0u);
+  EXPECT_EQ(blame.ours_wrong, 0u);
+  EXPECT_EQ(blame.spin_wrong, 0u);
   EXPECT_GE(both_directions, num_formulas * kMinBothDirections / kNumFormulas);
   EXPECT_EQ(spin_failures, 0u);
   EXPECT_EQ(reader_errors, 0u);
