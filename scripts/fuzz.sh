@@ -1,20 +1,23 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets of tests/fuzz with clang (AddressSanitizer, UndefinedBehavior-
 # Sanitizer, coverage feedback) and runs each on its seed corpus (tests/fuzz/README.md).
-#   bash scripts/fuzz.sh [--seconds S | --runs N] [--jobs J] [--seed S] [--report FILE] [TARGET...]
+#   bash scripts/fuzz.sh [--seconds S | --runs N] [--jobs J] [--seed S] [--keep] [--report F] [TARGET...]
 # --seconds S  each target for S seconds (default 60: the test command's short runs)
 # --runs N     each target for N executions instead (the campaigns: 10000000)
 # --jobs J     targets fuzzed at once (default: the number of cores)
 # --report F   a Markdown table of the runs (executions, time, rate, coverage, findings) in F
 # --seed S     libFuzzer's random seed (default 1: a rerun mutates the same way)
+# --keep       start from the scratch corpus a previous run left (a campaign resumed in parts)
 # New inputs go to a scratch corpus (FUZZ_WORK, default /tmp/rearm-fuzz), never into the
 # repository; a finding is written there as crash-*, timeout-* or oom-* and the script exits 1.
 # Every finding, once fixed, is copied into tests/fuzz/corpus/<target>/ (found_<what>.<ext>), where
 # the ordinary test build replays it (ctest -R _corpus).
 set -euo pipefail
 cd "$(dirname "$0")/.."
+# Stopping the script stops the targets it started (xargs would start the next ones).
+trap 'trap - INT TERM; kill 0' INT TERM
 
-seconds=60 runs="" jobs=$(nproc) report="" seed=1 targets=()
+seconds=60 runs="" jobs=$(nproc) report="" seed=1 keep=0 targets=()
 while (($#)); do
   case $1 in
     --seconds) seconds=$2; shift 2 ;;
@@ -22,7 +25,8 @@ while (($#)); do
     --jobs) jobs=$2; shift 2 ;;
     --report) report=$2; shift 2 ;;
     --seed) seed=$2; shift 2 ;;
-    -h|--help) sed -n 2,14p "$0"; exit 0 ;;
+    --keep) keep=1; shift ;;
+    -h|--help) sed -n 2,15p "$0"; exit 0 ;;
     -*) echo "fuzz.sh: unknown option $1" >&2; exit 2 ;;
     *) targets+=("$1"); shift ;;
   esac
@@ -44,7 +48,11 @@ fuzz_one() {
   local t=$1
   local work=$FUZZ_WORK/$t
   [[ -n $t && -n $FUZZ_WORK ]] || return 2
-  rm -rf "$work" && mkdir -p "$work/corpus"
+  if [[ $keep == 1 ]]; then
+    rm -f "$work/log" "$work/rc" && mkdir -p "$work/corpus"
+  else
+    rm -rf "$work" && mkdir -p "$work/corpus"
+  fi
   local budget=(-max_total_time="$seconds")
   [[ -n $runs ]] && budget=(-runs="$runs")
   local rc=0
@@ -54,7 +62,7 @@ fuzz_one() {
   echo "$rc" >"$work/rc"
 }
 export -f fuzz_one
-export FUZZ_BUILD FUZZ_WORK seconds runs seed
+export FUZZ_BUILD FUZZ_WORK seconds runs seed keep
 printf '%s\n' "${targets[@]}" | xargs -P "$jobs" -I{} bash -c 'fuzz_one {}'
 
 status=0

@@ -9,32 +9,12 @@
 #include <algorithm>
 #include <numeric>
 
+#include "geometry/box.h"
+
 namespace rearm::geometry::internal {
 namespace {
 
 using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
-
-// Axis-aligned box of exact double coordinates; closed, so touching boxes overlap.
-struct Box {
-  double x0, y0, x1, y1;
-  bool overlaps(const Box& o) const { return x0 <= o.x1 && o.x0 <= x1 && y0 <= o.y1 && o.y0 <= y1; }
-};
-
-Box edge_box(const Point& p, const Point& q) {
-  return Box{std::min(p.x(), q.x()), std::min(p.y(), q.y()), std::max(p.x(), q.x()),
-             std::max(p.y(), q.y())};
-}
-
-Box box_of(const Polygon& p) {
-  Box b = edge_box(p.vertices.front(), p.vertices.front());
-  for (const Point& v : p.vertices) {
-    b.x0 = std::min(b.x0, v.x());
-    b.y0 = std::min(b.y0, v.y());
-    b.x1 = std::max(b.x1, v.x());
-    b.y1 = std::max(b.y1, v.y());
-  }
-  return b;
-}
 
 Epick::Segment_2 segment(const Point& p, const Point& q) {
   return Epick::Segment_2(Epick::Point_2(p.x(), p.y()), Epick::Point_2(q.x(), q.y()));
@@ -46,13 +26,13 @@ bool boundaries_meet(const Polygon& a, const Polygon& b, const Box& box_b) {
   for (std::size_t i = 0; i < na; ++i) {
     const Point& p = a.vertices[i];
     const Point& q = a.vertices[(i + 1) % na];
-    const Box ea = edge_box(p, q);
-    if (!ea.overlaps(box_b)) continue;
+    const Box ea = box_of(p, q);
+    if (!overlaps(ea, box_b)) continue;
     const Epick::Segment_2 sa = segment(p, q);
     for (std::size_t j = 0; j < nb; ++j) {
       const Point& r = b.vertices[j];
       const Point& s = b.vertices[(j + 1) % nb];
-      if (ea.overlaps(edge_box(r, s)) && CGAL::do_intersect(sa, segment(r, s))) return true;
+      if (overlaps(ea, box_of(r, s)) && CGAL::do_intersect(sa, segment(r, s))) return true;
     }
   }
   return false;
@@ -61,7 +41,7 @@ bool boundaries_meet(const Polygon& a, const Polygon& b, const Box& box_b) {
 // Closed simple polygons meet iff their boundaries meet or, with disjoint boundaries, one
 // contains a vertex of the other.
 bool meet(const Polygon& a, const Box& box_a, const Polygon& b, const Box& box_b) {
-  if (!box_a.overlaps(box_b)) return false;
+  if (!overlaps(box_a, box_b)) return false;
   if (boundaries_meet(a, b, box_b)) return true;
   return contains(a, b.vertices.front()) || contains(b, a.vertices.front());
 }
@@ -78,7 +58,7 @@ Place place_alone(const Region& r, const Box& box, const RegionSet& a,
   bool inside = false;
   for (std::size_t k = 0; k < a.size(); ++k) {
     const Polygon& outer = a[k].outer;
-    if (!box.overlaps(boxes_a[k])) continue;
+    if (!overlaps(box, boxes_a[k])) continue;
     if (boundaries_meet(r.outer, outer, boxes_a[k])) return Place::kNeedsSweep;
     if (contains(r.outer, outer.vertices.front())) return Place::kNeedsSweep;  // a inside r
     if (!contains(outer, r.outer.vertices.front())) continue;

@@ -8,27 +8,11 @@
 #include <utility>
 
 #include "core/error.h"
+#include "geometry/box.h"
 #include "geometry/convex.h"
 
 namespace rearm::perception {
 namespace {
-
-template <typename Box>
-Box bounding_box(const Polygon& p) {
-  Box b{p.vertices.front(), p.vertices.front()};
-  for (const Point& v : p.vertices) {
-    b.lo = b.lo.cwiseMin(v);
-    b.hi = b.hi.cwiseMax(v);
-  }
-  return b;
-}
-
-// Is the box within distance r of x? (A cheap rejection before the exact sensor test.)
-template <typename Box>
-bool box_within(const Box& b, const Point& x, double r) {
-  const Point d = (b.lo - x).cwiseMax(x - b.hi).cwiseMax(Point::Zero());
-  return d.squaredNorm() <= r * r;
-}
 
 // Does every vertex of a lie within tol of some vertex of b? Then the convex hull of a lies
 // within tol of that of b.
@@ -94,13 +78,13 @@ SemanticMap::SemanticMap(const World& world, const Sensor& sensor, const ChangeT
   familiar_boxes_.reserve(nf);
   pending_.reserve(nf);
   for (std::size_t i = 0; i < nf; ++i) {
-    familiar_boxes_.push_back(bounding_box<Box>(world_.familiar[i].polygon));
+    familiar_boxes_.push_back(geometry::box_of(world_.familiar[i].polygon));
     pending_.push_back(i);
   }
   const std::size_t nu = world_.unknown.size();
   unknown_boxes_.reserve(nu);
   for (const UnknownObstacle& u : world_.unknown) {
-    unknown_boxes_.push_back(bounding_box<Box>(u.polygon));
+    unknown_boxes_.push_back(geometry::box_of(u.polygon));
   }
   // Room for any fragment (a convex m-gon ∩ the footprint has at most m + n vertices) in every
   // buffer, since the clip swaps buffers between obstacles: updates then never allocate.
@@ -141,7 +125,7 @@ bool SemanticMap::update(const Point& robot) {
   std::size_t kept = 0;
   for (const std::size_t i : pending_) {
     const FamiliarObstacle& f = world_.familiar[i];
-    if (box_within(familiar_boxes_[i], robot, range) && sensor_.sees(f.polygon, robot)) {
+    if (geometry::within(familiar_boxes_[i], robot, range) && sensor_.sees(f.polygon, robot)) {
       familiar_.push_back(f.polygon);
       familiar_ids_.push_back(f.id);
       changed = true;
@@ -161,7 +145,8 @@ bool SemanticMap::update(const Point& robot) {
   bool fragments_changed = false;
   for (std::size_t j = 0; j < world_.unknown.size(); ++j) {
     std::vector<Point>& c = candidate_[j];
-    if (box_within(unknown_boxes_[j], robot, range * (1 + sensor_.params().footprint_tolerance))) {
+    if (geometry::within(unknown_boxes_[j], robot,
+                         range * (1 + sensor_.params().footprint_tolerance))) {
       sensor_.fragment(world_.unknown[j].polygon, robot, c, scratch_);
       remember(j, c);
     } else {

@@ -17,6 +17,7 @@
 #include <string_view>
 #include <vector>
 
+#include "geometry/box.h"
 #include "perception/sensor.h"
 #include "perception/world.h"
 
@@ -102,10 +103,6 @@ class SemanticMap {
   std::optional<Disk> object(std::string_view id) const;
 
  private:
-  struct Box {
-    Point lo, hi;
-  };
-
   void bump();                                         // version + 1 and a fresh movable snapshot
   std::size_t find_object(std::string_view id) const;  // throws on an unknown id
   bool id_in_use(std::string_view id) const;
@@ -116,12 +113,12 @@ class SemanticMap {
   ChangeTolerances tol_;
   std::uint64_t version_ = 0;
 
-  std::vector<Box> familiar_boxes_;
+  std::vector<geometry::Box> familiar_boxes_;
   std::vector<std::size_t> pending_;  // familiar obstacles not localized yet, world order
   std::vector<Polygon> familiar_;
   std::vector<std::string> familiar_ids_;
 
-  std::vector<Box> unknown_boxes_;
+  std::vector<geometry::Box> unknown_boxes_;
   std::vector<std::vector<Point>> visible_;    // per unknown obstacle: fragment (maybe empty)
   std::vector<std::vector<Point>> candidate_;  // per unknown obstacle: this update's fragment
   std::vector<Point> scratch_;

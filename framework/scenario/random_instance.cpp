@@ -23,6 +23,7 @@
 #include "core/error.h"
 #include "core/rng.h"
 #include "geometry/boolean.h"
+#include "geometry/box.h"
 #include "geometry/convex.h"
 #include "geometry/distance.h"
 #include "geometry/polygon.h"
@@ -286,28 +287,7 @@ std::string describe(const InstanceSpec& spec) {
          " m)";
 }
 
-// Axis-aligned bounding box, for cheap rejection before exact distances.
-struct Box {
-  Point lo, hi;
-};
-
-Box bounding_box(const Polygon& p) {
-  Box b{p.vertices.front(), p.vertices.front()};
-  for (const Point& v : p.vertices) {
-    b.lo = b.lo.cwiseMin(v);
-    b.hi = b.hi.cwiseMax(v);
-  }
-  return b;
-}
-
-// Lower bound on the distance between anything inside a and anything inside b.
-double box_gap(const Box& a, const Box& b) {
-  const double dx = std::max({0.0, a.lo.x() - b.hi.x(), b.lo.x() - a.hi.x()});
-  const double dy = std::max({0.0, a.lo.y() - b.hi.y(), b.lo.y() - a.hi.y()});
-  return std::hypot(dx, dy);
-}
-
-double box_gap(const Box& a, const Point& p) { return box_gap(a, Box{p, p}); }
+using geometry::Box;
 
 double cross(const Point& a, const Point& b) { return a.x() * b.y() - a.y() * b.x(); }
 
@@ -330,17 +310,16 @@ bool closer_than(const Polygon& p, const Polygon& q, double w) {
   if (geometry::contains(q, p.vertices.front()) || geometry::contains(p, q.vertices.front())) {
     return true;
   }
-  auto edge_box = [](const Point& a, const Point& b) { return Box{a.cwiseMin(b), a.cwiseMax(b)}; };
-  const Box qbox = bounding_box(q);
+  const Box qbox = geometry::box_of(q);
   for (std::size_t i = 0, n = p.size(); i < n; ++i) {
     const Point& a = p.vertices[i];
     const Point& b = p.vertices[(i + 1) % n];
-    const Box ebox = edge_box(a, b);
-    if (box_gap(ebox, qbox) >= w) continue;
+    const Box ebox = geometry::box_of(a, b);
+    if (geometry::gap(ebox, qbox) >= w) continue;
     for (std::size_t j = 0, m = q.size(); j < m; ++j) {
       const Point& c = q.vertices[j];
       const Point& d = q.vertices[(j + 1) % m];
-      if (box_gap(ebox, edge_box(c, d)) >= w) continue;
+      if (geometry::gap(ebox, geometry::box_of(c, d)) >= w) continue;
       if (segment_distance(a, b, c, d) < w) return true;
     }
   }
@@ -351,7 +330,7 @@ bool closer_than(const Polygon& p, const Polygon& q, double w) {
 double vertex_depth(const Polygon& p, const Polygon& q, const Box& qbox) {
   double depth = 0;
   for (const Point& v : p.vertices) {
-    if (box_gap(qbox, v) > 0) continue;
+    if (geometry::gap(qbox, v) > 0) continue;
     depth = std::max(depth, -geometry::signed_distance(q, v));
   }
   return depth;
@@ -765,7 +744,7 @@ class Generator {
   bool commit_pocket() {
     Obstacle o;
     o.polygon = pocket_->pose.apply(pocket_->frame.walls());
-    o.box = bounding_box(o.polygon);
+    o.box = geometry::box_of(o.polygon);
     const std::vector<int> cells = raster_.newly_blocked(o.polygon);
     if (!raster_.connects(source_, targets_, cells)) return false;
     raster_.block(cells);
@@ -840,7 +819,7 @@ class Generator {
     if (crosses && !unknown && o.polygon.size() == 4) {  // a familiar rectangle
       o.polygon = clip_to_workspace(o.polygon, l_.width, l_.height);
     }
-    if (o.polygon.size() >= 3) o.box = bounding_box(o.polygon);
+    if (o.polygon.size() >= 3) o.box = geometry::box_of(o.polygon);
     return o;
   }
 
@@ -854,7 +833,7 @@ class Generator {
         if (std::abs(*c - wall) <= kWallSnap) *c = wall;
       }
     }
-    o.box = bounding_box(o.polygon);
+    o.box = geometry::box_of(o.polygon);
   }
 
   // Snapping (random_instance.h, "Clusters and passages"): a familiar obstacle less than w
@@ -874,7 +853,7 @@ class Generator {
     axis(gy0, gy1, v.y());
     if (v != Point::Zero()) translate(o, v);
     for (const Obstacle& q : obstacles_) {
-      if (box_gap(o.box, q.box) >= w || !closer_than(o.polygon, q.polygon, w)) continue;
+      if (geometry::gap(o.box, q.box) >= w || !closer_than(o.polygon, q.polygon, w)) continue;
       if (geometry::contains(q.polygon, o.polygon.vertices.front()) ||
           geometry::contains(o.polygon, q.polygon.vertices.front())) {
         return;
@@ -893,7 +872,7 @@ class Generator {
     if (p.size() < 3 || !boundary_rule(p, l_.width, l_.height, l_.passage)) return false;
     if (o.unknown && wall_gap(p, l_.width, l_.height) < l_.passage) return false;  // no touch
     auto clear_of_point = [&](const Point& x, double clearance) {
-      return box_gap(o.box, x) >= clearance || geometry::signed_distance(p, x) >= clearance;
+      return geometry::gap(o.box, x) >= clearance || geometry::signed_distance(p, x) >= clearance;
     };
     for (const std::vector<Point>* list : {&starts_, &goals_}) {
       for (const Point& x : *list) {
@@ -906,7 +885,7 @@ class Generator {
       return false;
     }
     for (const Obstacle& q : obstacles_) {
-      if (box_gap(o.box, q.box) >= l_.passage) continue;
+      if (geometry::gap(o.box, q.box) >= l_.passage) continue;
       const bool deep = vertex_depth(p, q.polygon, q.box) >= kMinOverlapDepth ||
                         vertex_depth(q.polygon, p, o.box) >= kMinOverlapDepth;
       if (!deep && closer_than(p, q.polygon, l_.passage)) return false;
@@ -945,7 +924,7 @@ class Generator {
   double new_area(const Obstacle& o) const {
     std::vector<Polygon> near;
     for (const Obstacle& q : obstacles_) {
-      if (box_gap(o.box, q.box) == 0) near.push_back(q.polygon);
+      if (geometry::gap(o.box, q.box) == 0) near.push_back(q.polygon);
     }
     if (near.empty()) return o.polygon.area();
     const geometry::RegionSet overlap =
