@@ -554,11 +554,20 @@ Executive::Advance Executive::navigate(Activity& a, const Pose& pose, double t, 
     a.guide.erase(a.guide.begin());
     a.monitor.reset(t);
   }
-  const Point nav = a.guide.empty() ? a.goal : a.guide.front();
+  Point nav = a.guide.empty() ? a.goal : a.guide.front();
   if (controller_.goal() != nav && !controller_.retarget(nav)) {
-    a.guide.clear();
-    controller_.retarget(a.goal);
+    // The next waypoint has left F_k since the guide was planned (the map changed under it):
+    // a new guide from here, within the guide budget, rather than a straight run at x*.
+    std::string note;
+    if (!plan_guide(a, center, t, note)) a.guide.clear();
+    nav = a.guide.empty() ? a.goal : a.guide.front();
+    if (!controller_.retarget(nav)) {
+      a.guide.clear();
+      nav = a.goal;
+      controller_.retarget(nav);
+    }
   }
+  if (std::optional<Advance> f = closed_by_memory(a, radius, center)) return *f;
   if (std::optional<Advance> done = arrive(a, center, rho, t)) return *done;
   if (a.facing != Facing::kNo) {
     if (std::optional<Advance> f = face(a, pose, controller_.goal(), t, dt)) return *f;
@@ -592,10 +601,11 @@ Executive::Advance Executive::rebuild(Activity& a, double radius, const Point& c
     return out;
   }
   if (rr.status == reactive::RebuildStatus::kGoalNotFree) {
-    if (a.kind == Kind::kDisassemble && p_.robust.drop && a.retargets < kMaxDropRetargets) {
+    if (a.kind == Kind::kDisassemble && p_.robust.drop && !a.paper_drop) {
       // A newly seen unknown fragment took the drop point (the topology knowledge, which
-      // re-plans, is unchanged): choose another.
-      ++a.retargets;
+      // re-plans, is unchanged): choose another; after kMaxDropRetargets, the paper's target
+      // (disassemble_target) and early stop, as near as the pair's freespace allows.
+      if (++a.retargets > kMaxDropRetargets) a.paper_drop = true;
       a.rejected_drops.push_back(target);
       a.planned = false;
       a.target.reset();
@@ -633,10 +643,15 @@ Executive::Advance Executive::rebuild(Activity& a, double radius, const Point& c
   // A guide in use stays while its next waypoint is still free (a path costs tens of ms; the
   // map changes every few ticks as fragments grow), else it is planned again.
   if (!a.guide.empty() && !reactive::in_freespace(controller_.mapped(), a.guide.front())) {
-    const auto path = guide_to(a, center, p_.guide);
-    a.guide = path ? std::vector<Point>(path->begin(), path->end() - 1) : std::vector<Point>{};
+    replan_guide(a, center);
   }
   return out;
+}
+
+// The guide in use planned again from `center` (empty when the raster finds no path).
+void Executive::replan_guide(Activity& a, const Point& center) const {
+  const auto path = guide_to(a, center, p_.guide);
+  a.guide = path ? std::vector<Point>(path->begin(), path->end() - 1) : std::vector<Point>{};
 }
 
 // Reached x* (MOVE: done; GRASP: align; RELEASE, DISASSEMBLE: stop and open), or the early stop
@@ -648,9 +663,10 @@ std::optional<Executive::Advance> Executive::arrive(Activity& a, const Point& ce
   bool reached = a.guide.empty() && (center - a.goal).norm() <= tol;
   std::string why = "reached x* = " + point_text(a.goal);
   auto early = [&] {
-    return p_.robust.drop ? drop_clear(center, rho)
-                          : disassembly_done(center, p_.robot_radius + rho, p_.robot_radius, map_,
-                                             *map_.carried(), regions_);
+    return p_.robust.drop && !a.paper_drop
+               ? drop_clear(center, rho)
+               : disassembly_done(center, p_.robot_radius + rho, p_.robot_radius, map_,
+                                  *map_.carried(), regions_);
   };
   if (!reached && a.kind == Kind::kDisassemble && map_.carried() && early()) {
     reached = true;
@@ -732,6 +748,27 @@ Executive::Advance Executive::recover(Activity& a, const Pose& pose, const Point
   }
   out.kind = Advance::kRestart;
   return out;
+}
+
+// Robust variant (RobustParams::early_release): a DISASSEMBLE still pressed against a dilation
+// after every back-up releases its object where it stands when the object is clear of every
+// region there: DISASSEMBLE only has to move the object out of the way (paper §V-B), and an
+// object left in the way is one that Fix mode can move again, where a wedged pair ends the task
+// (measured: the pair pushed into a corner of F_k beside its drop point, four back-ups without
+// a millimetre of motion). nullopt otherwise.
+std::optional<Executive::Advance> Executive::drop_short(Activity& a, const Pose& pose, double t) {
+  if (a.kind != Kind::kDisassemble || !p_.robust.early_release || map_.carried() != a.object) {
+    return std::nullopt;
+  }
+  const geometry::Disk m = *map_.object(a.object);
+  if (!clear_of_regions(m.center, m.radius, regions_)) return std::nullopt;
+  ++recoveries_.early_releases;
+  a.note = "released at " + point_text(m.center) + ", wedged short of the drop point at " +
+           point_text(pose.x);
+  a.phase = Phase::kOpen;
+  a.phase_start = t;
+  a.open_sent = false;
+  return Advance{};  // stop for one tick, then open
 }
 
 // Robust variant (RobustParams::redrop): the law and every guide failed to reach a DISASSEMBLE's
@@ -848,6 +885,13 @@ std::optional<Executive::Advance> Executive::fragment_blockers(Activity& a, doub
   a.fragments_checked = true;
   std::vector<geometry::Polygon> fixed = map_.familiar();
   fixed.insert(fixed.end(), map_.unknown().begin(), map_.unknown().end());
+  if (p_.robust.memory) {
+    // What has been seen of each unknown obstacle (a convex subset of it): the way the guide
+    // found closed may run past obstacles out of sight now.
+    for (const geometry::Polygon& h : map_.seen()) {
+      if (h.size() >= 3) fixed.push_back(h);
+    }
+  }
   topology::TopologyResult res;
   try {
     const ScopedStopwatch sw(times_.topology_s);
@@ -875,6 +919,16 @@ std::optional<Executive::Advance> Executive::fragment_blockers(Activity& a, doub
   }
   if (out) ++recoveries_.fragment_fixes;
   return out;
+}
+
+// Robust variant (RobustParams::memory with RobustParams::fragments): the last guide found a way
+// only through what has been seen of the unknown obstacles, so objects may close every way
+// together with them: fragment_blockers, once per action.
+std::optional<Executive::Advance> Executive::closed_by_memory(Activity& a, double radius,
+                                                              const Point& center) {
+  if (!a.memory_closed) return std::nullopt;
+  a.memory_closed = false;
+  return fragment_blockers(a, radius, center);
 }
 
 // Robust variant (RobustParams::early_dock): within kEarlyDockReach of the approach circle, and
@@ -939,16 +993,20 @@ bool Executive::plan_guide(Activity& a, const Point& center, double t, std::stri
 
 // A guide path from `center` to x* in F_k; with RobustParams::memory around what has been seen of
 // the unknown obstacles too, in F_k alone when that finds none.
-std::optional<std::vector<Point>> Executive::guide_to(const Activity& a, const Point& center,
+std::optional<std::vector<Point>> Executive::guide_to(Activity& a, const Point& center,
                                                       const GuideParams& gp) const {
   const geometry::Region& free = controller_.mapped().freespace;
+  bool closed = false;
   if (p_.robust.memory) {
     const std::vector<geometry::Polygon> seen = seen_dilated(a.built_radius);
     if (!seen.empty()) {
       if (auto path = guide_path(free, center, a.goal, gp, seen)) return path;
+      closed = true;
     }
   }
-  return guide_path(free, center, a.goal, gp);
+  std::optional<std::vector<Point>> path = guide_path(free, center, a.goal, gp);
+  if (closed && path) a.memory_closed = true;
+  return path;
 }
 
 // What has been seen of each unknown obstacle (perception::SemanticMap::seen) dilated by
@@ -1103,6 +1161,7 @@ Executive::Advance Executive::start_back_out(Activity& a, const Pose& pose, cons
   out.reason = why;
   if (!p_.robust.back_out) return out;
   if (!contact && a.back_outs >= p_.robust.max_back_outs) {
+    if (std::optional<Advance> d = drop_short(a, pose, t)) return *d;
     out.reason += " (after " + std::to_string(a.back_outs) + " back-ups)";
     return out;
   }
@@ -1399,8 +1458,9 @@ Executive::Advance Executive::plan_disassemble(Activity& a, double radius, const
   Advance out;
   const topology::TopologyResult res = timed_check(radius, center, center);
   ++topology_checks_;
-  if (p_.robust.drop && (!a.target || !geometry::contains(res.freespace, *a.target) ||
-                         !drop_kept(a, *a.target, rho))) {
+  if (p_.robust.drop && !a.paper_drop &&
+      (!a.target || !geometry::contains(res.freespace, *a.target) ||
+       !drop_kept(a, *a.target, rho))) {
     a.target = drop_point(a, res.freespace, radius, center, rho);
   }
   if (!a.target || !geometry::contains(res.freespace, *a.target)) {

@@ -447,11 +447,17 @@ class Executive {
     int contact_outs = 0;   // back-ups off ∂F_k when the monitor fired (kContactClearance)
     bool narrowed = false;  // RobustParams::narrow was tried for this action
     bool fragments_checked = false;  // RobustParams::fragments was tried for this action
-    bool tracking = false;           // the guide is followed straight (RobustParams::track)
-    Facing facing = Facing::kNo;     // turn toward the law's goal first (RobustParams::face)
-    bool guide_pending = false;      // plan a guide at the next rebuild (after such a back-up)
-    int retargets = 0;               // drop points chosen again after a fragment took one
-    int redrops = 0;                 // drop points chosen again after every guide failed
+    // RobustParams::memory: the last guide found a way only through what has been seen of the
+    // unknown obstacles (in F_k alone); RobustParams::fragments looks for objects that close
+    // the way together with them.
+    bool memory_closed = false;
+    bool tracking = false;        // the guide is followed straight (RobustParams::track)
+    Facing facing = Facing::kNo;  // turn toward the law's goal first (RobustParams::face)
+    bool guide_pending = false;   // plan a guide at the next rebuild (after such a back-up)
+    int retargets = 0;            // drop points chosen again after a fragment took one
+    // RobustParams::drop gave up after kMaxDropRetargets: the paper's target and early stop.
+    bool paper_drop = false;
+    int redrops = 0;  // drop points chosen again after every guide failed
     std::vector<Point> rejected_drops;
     // The kDropLevels index the drop point was chosen at (kDropLevels.size(): the clearest
     // point, no clearance asked); the point is kept while it still meets it.
@@ -537,8 +543,11 @@ class Executive {
   // Plans a guide from `center` to x* in the current mapped space (robust variant); false when
   // the guide budget is spent or no path helps (`note` says which).
   bool plan_guide(Activity& a, const Point& center, double t, std::string& note);
-  std::optional<std::vector<Point>> guide_to(const Activity& a, const Point& center,
+  void replan_guide(Activity& a, const Point& center) const;
+  std::optional<std::vector<Point>> guide_to(Activity& a, const Point& center,
                                              const GuideParams& gp) const;
+  std::optional<Advance> closed_by_memory(Activity& a, double radius, const Point& center);
+  std::optional<Advance> drop_short(Activity& a, const Pose& pose, double t);
   std::vector<geometry::Polygon> seen_dilated(double radius) const;
   bool early_dock(const Activity& a, const Pose& pose);
   geometry::RegionSet pair_freespace(const std::string& object);
