@@ -1,13 +1,17 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets of tests/fuzz with clang (AddressSanitizer, UndefinedBehavior-
 # Sanitizer, coverage feedback) and runs each on its seed corpus (tests/fuzz/README.md).
-#   bash scripts/fuzz.sh [--seconds S | --runs N] [--jobs J] [--seed S] [--keep] [--report F] [TARGET...]
+#   bash scripts/fuzz.sh [--seconds S | --runs N] [--jobs J] [--seed S] [--keep] [--ubsan-only]
+#                         [--report F] [TARGET...]
 # --seconds S  each target for S seconds (default 60: the test command's short runs)
 # --runs N     each target for N executions instead (the campaigns: 10000000)
 # --jobs J     targets fuzzed at once (default: the number of cores)
 # --report F   a Markdown table of the runs (executions, time, rate, coverage, findings) in F
 # --seed S     libFuzzer's random seed (default 1: a rerun mutates the same way)
 # --keep       start from the scratch corpus a previous run left (a campaign resumed in parts)
+# --ubsan-only UndefinedBehaviorSanitizer without AddressSanitizer (build-fuzz-ubsan): several
+#              times the rate, for long campaigns; replay their corpus afterwards under both
+#              (the default build) with --keep --runs 0, which executes every input once
 # New inputs go to a scratch corpus (FUZZ_WORK, default /tmp/rearm-fuzz), never into the
 # repository; a finding is written there as crash-*, timeout-* or oom-* and the script exits 1.
 # Every finding, once fixed, is copied into tests/fuzz/corpus/<target>/ (found_<what>.<ext>), where
@@ -17,7 +21,7 @@ cd "$(dirname "$0")/.."
 # Stopping the script stops the targets it started (xargs would start the next ones).
 trap 'trap - INT TERM; kill 0' INT TERM
 
-seconds=60 runs="" jobs=$(nproc) report="" seed=1 keep=0 targets=()
+seconds=60 runs="" jobs=$(nproc) report="" seed=1 keep=0 ubsan_only=0 targets=()
 while (($#)); do
   case $1 in
     --seconds) seconds=$2; shift 2 ;;
@@ -26,7 +30,8 @@ while (($#)); do
     --report) report=$2; shift 2 ;;
     --seed) seed=$2; shift 2 ;;
     --keep) keep=1; shift ;;
-    -h|--help) sed -n 2,15p "$0"; exit 0 ;;
+    --ubsan-only) ubsan_only=1; shift ;;
+    -h|--help) sed -n 2,19p "$0"; exit 0 ;;
     -*) echo "fuzz.sh: unknown option $1" >&2; exit 2 ;;
     *) targets+=("$1"); shift ;;
   esac
@@ -35,10 +40,16 @@ if ((${#targets[@]} == 0)); then
   for f in tests/fuzz/fuzz_*.cpp; do targets+=("$(basename "$f" .cpp)"); done
 fi
 
-FUZZ_BUILD=${FUZZ_BUILD:-build-fuzz}
 FUZZ_WORK=${FUZZ_WORK:-/tmp/rearm-fuzz}
+sanitizers=(-DREARM_SANITIZE=ON)
+if [[ $ubsan_only == 1 ]]; then
+  FUZZ_BUILD=${FUZZ_BUILD:-build-fuzz-ubsan}
+  ub="-fsanitize=undefined -fno-sanitize-recover=undefined"
+  sanitizers=(-DREARM_SANITIZE=OFF "-DCMAKE_CXX_FLAGS=$ub" "-DCMAKE_EXE_LINKER_FLAGS=$ub")
+fi
+FUZZ_BUILD=${FUZZ_BUILD:-build-fuzz}
 CC=clang CXX=clang++ cmake -S . -B "$FUZZ_BUILD" -DCMAKE_BUILD_TYPE=Debug \
-  "-DCMAKE_CXX_FLAGS_DEBUG=-O1 -g1" -DREARM_FUZZ=ON -DREARM_SANITIZE=ON \
+  "-DCMAKE_CXX_FLAGS_DEBUG=-O1 -g1" -DREARM_FUZZ=ON "${sanitizers[@]}" \
   -DREARM_BUILD_TESTS=OFF -DREARM_BUILD_BENCH=OFF >/dev/null
 cmake --build "$FUZZ_BUILD" -j"$(nproc)" --target fuzz_all
 

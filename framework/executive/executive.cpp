@@ -556,10 +556,15 @@ Executive::Advance Executive::navigate(Activity& a, const Pose& pose, double t, 
   }
   Point nav = a.guide.empty() ? a.goal : a.guide.front();
   if (controller_.goal() != nav && !controller_.retarget(nav)) {
-    // The next waypoint has left F_k since the guide was planned (the map changed under it):
-    // a new guide from here, within the guide budget, rather than a straight run at x*.
-    std::string note;
-    if (!plan_guide(a, center, t, note)) a.guide.clear();
+    // The next waypoint has left F_k since the guide was planned (the map changed under it): the
+    // guide is planned again from here (kMaxGuideReplans per action) rather than dropped for a
+    // straight run at x*.
+    if (a.replans < kMaxGuideReplans) {
+      ++a.replans;
+      replan_guide(a, center);
+    } else {
+      a.guide.clear();
+    }
     nav = a.guide.empty() ? a.goal : a.guide.front();
     if (!controller_.retarget(nav)) {
       a.guide.clear();

@@ -72,6 +72,10 @@ inline constexpr int kMaxDropRetargets = 8;
 // Drop points chosen again per DISASSEMBLE after the law and every guide failed to reach the last
 // (RobustParams::redrop).
 inline constexpr int kMaxRedrops = 4;
+// Guides planned again per action because their next waypoint left F_k (a newly seen fragment
+// took it); past this the guide is dropped and the law drives at x* (the guide budget,
+// GuideParams::max_recoveries, bounds what follows).
+inline constexpr int kMaxGuideReplans = 8;
 // m beyond the approach circle within which RobustParams::early_dock applies.
 inline constexpr double kEarlyDockReach = 0.1;
 // Miter limit (units of the dilation radius) of RobustParams::bevel.
@@ -138,11 +142,18 @@ struct RobustParams {
   // nearest_clear_point), and stops early only there; in a pocket where none is reachable, the
   // nearest at a lower level of kDropLevels, then the clearest reachable point; the paper's
   // target (an edge midpoint of F, i.e. against an obstacle or the boundary) when none is.
+  // A drop point that newly seen fragments take is chosen again, kMaxDropRetargets times per
+  // action; then the paper's target and early stop serve (eight points in turn taken across
+  // unexplored clutter, measured: better a drop near the robot than a stuck task).
   bool drop = true;
   // When the progress monitor fires during RELEASE and the carried object's centre already lies
   // in the goal region, goal_tolerance inside it, the object is released there (the predicate
   // holds anywhere in the region; the paper drives the pair to the region's centroid, §IV,
-  // which a pocket or a cluster can make unreachable). Before the guide.
+  // which a pocket or a cluster can make unreachable). Before the guide. Likewise a
+  // DISASSEMBLE still pressed against a dilation after every back-up releases its object where
+  // it stands, when the object is clear of every region (drop_short): DISASSEMBLE has only to
+  // take the object out of the way, and an object Fix mode can move again is better than a
+  // wedged pair (measured: a pair pushed into a corner beside its drop point).
   bool early_release = true;
   // When the mission is accepting, release again into its region every object an LTL RELEASE
   // placed and Fix mode later moved away (the formula holds, the end state would not).
@@ -229,7 +240,10 @@ struct RobustParams {
   // alone, so a guide planned after the robot had left a pocket of unknown obstacles led it back
   // into the same pocket (measured: most of the sweep's "revisited" failures). The hull lies in
   // the obstacle (it is convex), so a path it blocks is blocked; when it leaves none, the guide
-  // runs in F_k alone.
+  // runs in F_k alone, and (with `fragments`) the topology check runs again with the hulls as
+  // fixed obstacles: objects that close every way together with remembered obstacles go to Fix
+  // mode (measured: a pair shuttled between two passages, each closed by an unknown obstacle out
+  // of sight from the other, one of them together with an object released earlier).
   bool memory = true;
   // The guide budget (GuideParams::max_recoveries) counts only guides that brought no progress:
   // when the progress monitor fires with the centre kPersistProgress closer to x* than at every
@@ -451,6 +465,7 @@ class Executive {
     // unknown obstacles (in F_k alone); RobustParams::fragments looks for objects that close
     // the way together with them.
     bool memory_closed = false;
+    int replans = 0;              // guides planned again after their next waypoint left F_k
     bool tracking = false;        // the guide is followed straight (RobustParams::track)
     Facing facing = Facing::kNo;  // turn toward the law's goal first (RobustParams::face)
     bool guide_pending = false;   // plan a guide at the next rebuild (after such a back-up)
