@@ -928,11 +928,14 @@ std::optional<Executive::Advance> Executive::fragment_blockers(Activity& a, doub
 
 // Robust variant (RobustParams::memory with RobustParams::fragments): the last guide found a way
 // only through what has been seen of the unknown obstacles, so objects may close every way
-// together with them: fragment_blockers, once per action.
+// together with them: fragment_blockers, once per action. Not for DISASSEMBLE, whose drop point
+// has alternatives (drop_point), as in rebuild: Fix mode for it drops the carried object by
+// another DISASSEMBLE, which met the same hulls and nested Fix mode to its limit (measured).
 std::optional<Executive::Advance> Executive::closed_by_memory(Activity& a, double radius,
                                                               const Point& center) {
   if (!a.memory_closed) return std::nullopt;
   a.memory_closed = false;
+  if (a.kind == Kind::kDisassemble) return std::nullopt;
   return fragment_blockers(a, radius, center);
 }
 
