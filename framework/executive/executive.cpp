@@ -888,6 +888,12 @@ std::optional<Executive::Advance> Executive::fragment_blockers(Activity& a, doub
                                                                const Point& center) {
   if (!p_.robust.fragments || a.fragments_checked || !a.target) return std::nullopt;
   a.fragments_checked = true;
+  return closing_with_fragments(a, radius, center);
+}
+
+// fragment_blockers' check, whichever recovery asks for it.
+std::optional<Executive::Advance> Executive::closing_with_fragments(Activity& a, double radius,
+                                                                    const Point& center) {
   std::vector<geometry::Polygon> fixed = map_.familiar();
   fixed.insert(fixed.end(), map_.unknown().begin(), map_.unknown().end());
   if (p_.robust.memory) {
@@ -928,15 +934,20 @@ std::optional<Executive::Advance> Executive::fragment_blockers(Activity& a, doub
 
 // Robust variant (RobustParams::memory with RobustParams::fragments): the last guide found a way
 // only through what has been seen of the unknown obstacles, so objects may close every way
-// together with them: fragment_blockers, once per action. Not for DISASSEMBLE, whose drop point
-// has alternatives (drop_point), as in rebuild: Fix mode for it drops the carried object by
-// another DISASSEMBLE, which met the same hulls and nested Fix mode to its limit (measured).
+// together with them: fragment_blockers' check, once per action, beside (not instead of) its
+// own once (sharing it left a RELEASE infeasible after the Fix mode this one started: measured).
+// Not for DISASSEMBLE, whose drop point has alternatives (drop_point), as in rebuild: Fix mode
+// for it drops the carried object by another DISASSEMBLE, which met the same hulls and nested
+// Fix mode to its limit (measured).
 std::optional<Executive::Advance> Executive::closed_by_memory(Activity& a, double radius,
                                                               const Point& center) {
   if (!a.memory_closed) return std::nullopt;
   a.memory_closed = false;
-  if (a.kind == Kind::kDisassemble) return std::nullopt;
-  return fragment_blockers(a, radius, center);
+  if (!p_.robust.fragments || a.memory_checked || !a.target || a.kind == Kind::kDisassemble) {
+    return std::nullopt;
+  }
+  a.memory_checked = true;
+  return closing_with_fragments(a, radius, center);
 }
 
 // Robust variant (RobustParams::early_dock): within kEarlyDockReach of the approach circle, and

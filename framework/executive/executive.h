@@ -465,6 +465,7 @@ class Executive {
     // unknown obstacles (in F_k alone); RobustParams::fragments looks for objects that close
     // the way together with them.
     bool memory_closed = false;
+    bool memory_checked = false;  // closed_by_memory ran its check for this action
     int replans = 0;              // guides planned again after their next waypoint left F_k
     bool tracking = false;        // the guide is followed straight (RobustParams::track)
     Facing facing = Facing::kNo;  // turn toward the law's goal first (RobustParams::face)
@@ -562,6 +563,7 @@ class Executive {
   std::optional<std::vector<Point>> guide_to(Activity& a, const Point& center,
                                              const GuideParams& gp) const;
   std::optional<Advance> closed_by_memory(Activity& a, double radius, const Point& center);
+  std::optional<Advance> closing_with_fragments(Activity& a, double radius, const Point& center);
   std::optional<Advance> drop_short(Activity& a, const Pose& pose, double t);
   std::vector<geometry::Polygon> seen_dilated(double radius) const;
   bool early_dock(const Activity& a, const Pose& pose);
