@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Baseline benchmarks (issue 7, acceptance 3): builds and runs bench/baselines/baselines_bench
+# Baseline benchmarks (docs/experiments.md): builds and runs bench/baselines/baselines_bench
 # (JSON into results/$MACHINE/baselines_bench.json): the wall time B2 (BiRRT) and B1 (mRS) take
 # when given 1 s on the unsolvable pocket instance (acceptance: within 1.2 s; counter
 # overrun_s), and the planning time of B1 and B2 on the monotone and the Fig. 5 instances.

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Reactive-layer benchmarks (issue 4, acceptance 4; docs/reactive.md §7 "Speed to beat").
+# Reactive-layer benchmarks (docs/reactive.md §7 "Speed to beat").
 #
 # Builds and runs bench/reactive/reactive_bench (JSON into results/$MACHINE/reactive.json) on
 # the §7 scene (20 × 20 m, K = 1, 2, 5, 10, 15, 20 familiar non-convex obstacles, radius 0.2,

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Topology-check benchmarks (issue 5, acceptance 4; docs/executive.md "Benchmarks required").
+# Topology-check benchmarks (docs/executive.md "Benchmarks required").
 #
 # Builds and runs bench/topology/topology_bench (JSON into results/$MACHINE/topology.json):
 # check_topology swept over movable objects 1, 2, 4, 8, 16, 32 × familiar obstacles 0, 4, 16,
@@ -145,7 +145,7 @@ for target in ("FarCorner", "InsideObject"):
         lines.append("")
 
 # The target point, every mode.
-lines += ["## 10 objects × 20 obstacles (the target point of issue 5)", "",
+lines += ["## 10 objects × 20 obstacles (the target point of docs/executive.md)", "",
           "| case | no cache (cold) wall | CPU | warm cache wall | CPU | verdicts |",
           "|---|---|---|---|---|---|"]
 for target in ("FarCorner", "InsideObject"):
@@ -209,7 +209,7 @@ for mode in ("Cached", ""):
             targets.append(check(f"≤ 1 ms at 10 objects, 20 obstacles, "
                                  f"{'carrying' if carrying else 'robot alone'}, {steps}, "
                                  f"{MODE[mode]}", f"Topology{target}{mode}", carrying))
-lines += ["", "## Target (issue 5: ≤ 1 ms at 10 objects and 20 obstacles)", ""] + targets
+lines += ["", "## Target (docs/executive.md: ≤ 1 ms at 10 objects and 20 obstacles)", ""] + targets
 lines += ["", "How (topology/freespace.h): bound − ∪fixed is computed once per familiar-obstacle "
           "map and kept exact (TopologyCache); per call, an object whose bounding box meets no "
           "other object's and no edge of bound − ∪fixed becomes a hole after one exact point "

@@ -5,6 +5,8 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
+# The text's house checks: every cited docs/ file exists, no issue numbers in comments.
+bash scripts/check_docs.sh
 JOBS=$(nproc)
 BUILD=${BUILD:-build}
 cmake -S . -B "$BUILD" -DCMAKE_BUILD_TYPE=Release -DREARM_WERROR=ON -DREARM_SANITIZE=OFF \
