@@ -617,6 +617,11 @@ Executive::Advance Executive::rebuild(Activity& a, double radius, const Point& c
       out.kind = Advance::kRestart;
       out.reason = rr.message;
     } else if (a.kind == Kind::kDisassemble) {
+      // Every drop point taken and the paper's target cut off too: release where the pair
+      // stands when that is clear of the regions (drop_short), else the action ends stuck.
+      if (p_.robust.drop) {
+        if (std::optional<Advance> d = drop_short(a, center, t)) return *d;
+      }
       out.kind = Advance::kStuck;
       out.reason =
           "the disassembly target " + point_text(target) + " is not reachable: " + rr.message;
@@ -760,16 +765,17 @@ Executive::Advance Executive::recover(Activity& a, const Pose& pose, const Point
 // region there: DISASSEMBLE only has to move the object out of the way (paper §V-B), and an
 // object left in the way is one that Fix mode can move again, where a wedged pair ends the task
 // (measured: the pair pushed into a corner of F_k beside its drop point, four back-ups without
-// a millimetre of motion). nullopt otherwise.
-std::optional<Executive::Advance> Executive::drop_short(Activity& a, const Pose& pose, double t) {
+// a millimetre of motion). rebuild() asks the same when every drop point was taken and the
+// paper's target is cut off as well. nullopt otherwise.
+std::optional<Executive::Advance> Executive::drop_short(Activity& a, const Point& at, double t) {
   if (a.kind != Kind::kDisassemble || !p_.robust.early_release || map_.carried() != a.object) {
     return std::nullopt;
   }
   const geometry::Disk m = *map_.object(a.object);
   if (!clear_of_regions(m.center, m.radius, regions_)) return std::nullopt;
   ++recoveries_.early_releases;
-  a.note = "released at " + point_text(m.center) + ", wedged short of the drop point at " +
-           point_text(pose.x);
+  a.note = "released at " + point_text(m.center) + " short of the drop point (centre at " +
+           point_text(at) + ")";
   a.phase = Phase::kOpen;
   a.phase_start = t;
   a.open_sent = false;
@@ -1180,7 +1186,7 @@ Executive::Advance Executive::start_back_out(Activity& a, const Pose& pose, cons
   out.reason = why;
   if (!p_.robust.back_out) return out;
   if (!contact && a.back_outs >= p_.robust.max_back_outs) {
-    if (std::optional<Advance> d = drop_short(a, pose, t)) return *d;
+    if (std::optional<Advance> d = drop_short(a, pose.x, t)) return *d;
     out.reason += " (after " + std::to_string(a.back_outs) + " back-ups)";
     return out;
   }

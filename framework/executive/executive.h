@@ -564,7 +564,7 @@ class Executive {
                                              const GuideParams& gp) const;
   std::optional<Advance> closed_by_memory(Activity& a, double radius, const Point& center);
   std::optional<Advance> closing_with_fragments(Activity& a, double radius, const Point& center);
-  std::optional<Advance> drop_short(Activity& a, const Pose& pose, double t);
+  std::optional<Advance> drop_short(Activity& a, const Point& at, double t);
   std::vector<geometry::Polygon> seen_dilated(double radius) const;
   bool early_dock(const Activity& a, const Pose& pose);
   geometry::RegionSet pair_freespace(const std::string& object);
