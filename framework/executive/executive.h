@@ -144,7 +144,9 @@ struct RobustParams {
   // target (an edge midpoint of F, i.e. against an obstacle or the boundary) when none is.
   // A drop point that newly seen fragments take is chosen again, kMaxDropRetargets times per
   // action; then the paper's target and early stop serve (eight points in turn taken across
-  // unexplored clutter, measured: better a drop near the robot than a stuck task).
+  // unexplored clutter, measured: better a drop near the robot than a stuck task), and when the
+  // visible fragments cut that target off too, the object is released where the pair stands if
+  // it is clear of every region (drop_short).
   bool drop = true;
   // When the progress monitor fires during RELEASE and the carried object's centre already lies
   // in the goal region, goal_tolerance inside it, the object is released there (the predicate
