@@ -606,11 +606,11 @@ Executive::Advance Executive::rebuild(Activity& a, double radius, const Point& c
     return out;
   }
   if (rr.status == reactive::RebuildStatus::kGoalNotFree) {
-    if (a.kind == Kind::kDisassemble && p_.robust.drop && !a.paper_drop) {
+    if (a.kind == Kind::kDisassemble && drop_points(a)) {
       // A newly seen unknown fragment took the drop point (the topology knowledge, which
       // re-plans, is unchanged): choose another; after kMaxDropRetargets, the paper's target
       // (disassemble_target) and early stop, as near as the pair's freespace allows.
-      if (++a.retargets > kMaxDropRetargets) a.paper_drop = true;
+      ++a.retargets;
       a.rejected_drops.push_back(target);
       a.planned = false;
       a.target.reset();
@@ -673,10 +673,9 @@ std::optional<Executive::Advance> Executive::arrive(Activity& a, const Point& ce
   bool reached = a.guide.empty() && (center - a.goal).norm() <= tol;
   std::string why = "reached x* = " + point_text(a.goal);
   auto early = [&] {
-    return p_.robust.drop && !a.paper_drop
-               ? drop_clear(center, rho)
-               : disassembly_done(center, p_.robot_radius + rho, p_.robot_radius, map_,
-                                  *map_.carried(), regions_);
+    return drop_points(a) ? drop_clear(center, rho)
+                          : disassembly_done(center, p_.robot_radius + rho, p_.robot_radius, map_,
+                                             *map_.carried(), regions_);
   };
   if (!reached && a.kind == Kind::kDisassemble && map_.carried() && early()) {
     reached = true;
@@ -780,6 +779,10 @@ std::optional<Executive::Advance> Executive::drop_short(Activity& a, const Point
   a.phase_start = t;
   a.open_sent = false;
   return Advance{};  // stop for one tick, then open
+}
+
+bool Executive::drop_points(const Activity& a) const {
+  return p_.robust.drop && a.retargets <= kMaxDropRetargets;
 }
 
 // Robust variant (RobustParams::redrop): the law and every guide failed to reach a DISASSEMBLE's
@@ -1483,9 +1486,8 @@ Executive::Advance Executive::plan_disassemble(Activity& a, double radius, const
   Advance out;
   const topology::TopologyResult res = timed_check(radius, center, center);
   ++topology_checks_;
-  if (p_.robust.drop && !a.paper_drop &&
-      (!a.target || !geometry::contains(res.freespace, *a.target) ||
-       !drop_kept(a, *a.target, rho))) {
+  if (drop_points(a) && (!a.target || !geometry::contains(res.freespace, *a.target) ||
+                         !drop_kept(a, *a.target, rho))) {
     a.target = drop_point(a, res.freespace, radius, center, rho);
   }
   if (!a.target || !geometry::contains(res.freespace, *a.target)) {

@@ -473,9 +473,7 @@ class Executive {
     Facing facing = Facing::kNo;  // turn toward the law's goal first (RobustParams::face)
     bool guide_pending = false;   // plan a guide at the next rebuild (after such a back-up)
     int retargets = 0;            // drop points chosen again after a fragment took one
-    // RobustParams::drop gave up after kMaxDropRetargets: the paper's target and early stop.
-    bool paper_drop = false;
-    int redrops = 0;  // drop points chosen again after every guide failed
+    int redrops = 0;              // drop points chosen again after every guide failed
     std::vector<Point> rejected_drops;
     // The kDropLevels index the drop point was chosen at (kDropLevels.size(): the clearest
     // point, no clearance asked); the point is kept while it still meets it.
@@ -567,6 +565,9 @@ class Executive {
   std::optional<Advance> closed_by_memory(Activity& a, double radius, const Point& center);
   std::optional<Advance> closing_with_fragments(Activity& a, double radius, const Point& center);
   std::optional<Advance> drop_short(Activity& a, const Point& at, double t);
+  // RobustParams::drop's drop points serve this action (it has not given up on them after
+  // kMaxDropRetargets); else the paper's target and early stop.
+  bool drop_points(const Activity& a) const;
   std::vector<geometry::Polygon> seen_dilated(double radius) const;
   bool early_dock(const Activity& a, const Pose& pose);
   geometry::RegionSet pair_freespace(const std::string& object);
