@@ -74,4 +74,14 @@ std::vector<Polygon> convex_partition(const Polygon& p) {
   return out;
 }
 
+std::vector<Polygon> PartitionCache::pieces(const Polygon& p) {
+  for (const auto& [vertices, parts] : entries_) {
+    if (vertices == p.vertices) return parts;
+  }
+  std::vector<Polygon> parts = convex_partition(p);
+  if (entries_.size() >= kPartitionCacheEntries) entries_.clear();
+  entries_.emplace_back(p.vertices, parts);
+  return parts;
+}
+
 }  // namespace rearm::geometry

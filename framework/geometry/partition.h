@@ -7,6 +7,8 @@
 // edges between pieces are exact.
 #pragma once
 
+#include <cstddef>
+#include <utility>
 #include <vector>
 
 #include "geometry/polygon.h"
@@ -17,5 +19,22 @@ inline constexpr std::size_t kOptimalPartitionLimit = 64;
 inline constexpr double kSliverArea = 1e-9;
 
 std::vector<Polygon> convex_partition(const Polygon& p);
+
+// Partitions remembered by DecompositionCache's rule (the exact vertices).
+inline constexpr std::size_t kPartitionCacheEntries = 256;
+
+// convex_partition's results remembered by their polygon's exact vertices (the partition is a
+// function of them alone, so a hit returns what the call would): the reactive controller's
+// convex fallback partitions the same familiar components at every rebuild, and those
+// partitions were a quarter of an N = 8 trial's controller time. Emptied when it holds
+// kPartitionCacheEntries polygons. Not thread-safe (one per controller).
+class PartitionCache {
+ public:
+  std::vector<Polygon> pieces(const Polygon& p);
+  std::size_t size() const { return entries_.size(); }
+
+ private:
+  std::vector<std::pair<std::vector<Point>, std::vector<Polygon>>> entries_;
+};
 
 }  // namespace rearm::geometry

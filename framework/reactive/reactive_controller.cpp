@@ -32,15 +32,14 @@ std::optional<Point> snap_goal(const MappedSpace& m, const Point& goal) {
 // Replaces the familiar components for which `pick` holds by their convex pieces, kept as
 // convex obstacles of the model space (the unknown fragments' treatment).
 template <typename Pick>
-void convexify(MappedSpace& m, Pick pick) {
+void convexify(MappedSpace& m, geometry::PartitionCache& cache, Pick pick) {
   std::vector<FamiliarComponent> kept;
   for (FamiliarComponent& c : m.familiar) {
     if (!pick(c)) {
       kept.push_back(std::move(c));
       continue;
     }
-    for (Polygon& piece : geometry::convex_partition(c.polygon))
-      m.unknown.push_back(std::move(piece));
+    for (Polygon& piece : cache.pieces(c.polygon)) m.unknown.push_back(std::move(piece));
   }
   m.familiar = std::move(kept);
 }
@@ -80,19 +79,20 @@ RebuildResult ReactiveController::try_rebuild(const SemanticInput& map, double r
                 "disconnected from the robot)"};
   }
   std::unique_ptr<Diffeomorphism> diffeo;
-  if (fallback_ && convexify_all_) convexify(mapped, [](const FamiliarComponent&) { return true; });
+  if (fallback_ && convexify_all_)
+    convexify(mapped, partitions_, [](const FamiliarComponent&) { return true; });
   try {
     diffeo = std::make_unique<Diffeomorphism>(
         Diffeomorphism::build(mapped, diffeo_params_, decompositions_));
   } catch (const Error&) {
     if (!fallback_) throw;
     ++fallbacks_;
-    convexify(mapped, [](const FamiliarComponent& c) { return c.curved; });
+    convexify(mapped, partitions_, [](const FamiliarComponent& c) { return c.curved; });
     try {
       diffeo = std::make_unique<Diffeomorphism>(
           Diffeomorphism::build(mapped, diffeo_params_, decompositions_));
     } catch (const Error&) {
-      convexify(mapped, [](const FamiliarComponent&) { return true; });
+      convexify(mapped, partitions_, [](const FamiliarComponent&) { return true; });
       diffeo = std::make_unique<Diffeomorphism>(
           Diffeomorphism::build(mapped, diffeo_params_, decompositions_));
     }

@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 
+#include "geometry/partition.h"
 #include "reactive/diffeomorphism.h"
 #include "reactive/kinematics.h"
 #include "reactive/mapped_space.h"
@@ -105,8 +106,9 @@ class ReactiveController {
   DiffeoParams diffeo_params_;
   NavParams nav_;
   MappedSpace mapped_;
-  MappedSpaceBuilder mapped_builder_;  // dilations, erosion and the last mapped space
-  DecompositionCache decompositions_;  // components' candidate trees, kept across rebuilds
+  MappedSpaceBuilder mapped_builder_;    // dilations, erosion and the last mapped space
+  DecompositionCache decompositions_;    // components' candidate trees, kept across rebuilds
+  geometry::PartitionCache partitions_;  // the convex fallback's pieces, kept across rebuilds
   std::unique_ptr<Diffeomorphism> diffeo_;
   Point goal_ = Point::Zero();
   Point model_goal_ = Point::Zero();
