@@ -20,7 +20,7 @@ inline constexpr double kSliverArea = 1e-9;
 
 std::vector<Polygon> convex_partition(const Polygon& p);
 
-// Partitions remembered by DecompositionCache's rule (the exact vertices).
+// Polygons PartitionCache remembers before it is emptied (as reactive::DecompositionCache).
 inline constexpr std::size_t kPartitionCacheEntries = 256;
 
 // convex_partition's results remembered by their polygon's exact vertices (the partition is a
