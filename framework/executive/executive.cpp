@@ -69,6 +69,10 @@ void validate(const ExecutiveParams& p) {
       !std::isfinite(p.robust.withdraw_max) || p.robust.withdraw_max < 0) {
     throw Error("executive: withdraw_clearance and withdraw_max must be finite and >= 0");
   }
+  if (!std::isfinite(p.robust.rebuild_margin) || p.robust.rebuild_margin < 0) {
+    throw Error("executive: rebuild_margin must be finite and >= 0, got " +
+                std::to_string(p.robust.rebuild_margin));
+  }
   if (!std::isfinite(p.robust.back_out_step) || !(p.robust.back_out_step > 0) ||
       p.robust.max_back_outs < 0 || !std::isfinite(p.robust.contact_margin) ||
       p.robust.contact_margin < 0 || p.robust.contact_margin > p.robot_radius) {
@@ -529,9 +533,9 @@ Executive::Advance Executive::navigate(Activity& a, const Pose& pose, double t, 
 
   // A grasp approach point chosen earlier may have lost its clearance to a newly seen unknown
   // fragment (the topology knowledge is unchanged then).
-  if (a.planned && a.kind == Kind::kGrasp && a.built && a.built_version != map_.version() &&
-      known_clearance(map_, *a.target) < plan_radius(a)) {
-    a.planned = false;
+  if (a.planned && a.kind == Kind::kGrasp && a.built && a.checked_version != map_.version()) {
+    a.checked_version = map_.version();
+    if (known_clearance(map_, *a.target) < plan_radius(a)) a.planned = false;
   }
   if (!a.planned || knowledge_changed(a)) {
     Advance p;
@@ -542,8 +546,8 @@ Executive::Advance Executive::navigate(Activity& a, const Pose& pose, double t, 
     }
     if (p.kind != Advance::kCommand) return p;
   }
-  if (!a.built || a.built_version != map_.version() || a.built_target != *a.target ||
-      a.built_radius != radius) {
+  if (!a.built || a.built_target != *a.target || a.built_radius != radius ||
+      stale(a, radius, center)) {
     Advance b = rebuild(a, radius, center, t);
     if (b.center_not_free) return start_back_out(a, pose, b.reason, t, dt);
     if (b.kind != Advance::kCommand) return b;
@@ -585,6 +589,20 @@ Executive::Advance Executive::navigate(Activity& a, const Pose& pose, double t, 
     if (std::optional<Advance> step = track(a, pose, nav, rho, dt)) return *step;
   }
   return command(a, pose, rho, t, dt);
+}
+
+// A map version newer than the build: stale at once in the paper variant, else once the news
+// (map_news.h) comes within rebuild_margin of the centre's disk. The news is measured once per
+// map version; as the centre moves, its distance shrinks by at most the centre's travel.
+bool Executive::stale(Activity& a, double radius, const Point& center) {
+  if (a.built_version == map_.version()) return false;
+  if (!p_.robust.defer) return true;
+  if (a.news_version != map_.version()) {
+    a.news_version = map_.version();
+    a.news = news_distance(a.built_map, map_, center);
+    a.news_at = center;
+  }
+  return a.news - (center - a.news_at).norm() <= radius + p_.robust.rebuild_margin;
 }
 
 // The diffeomorphism for the current map, radius and x* (reactive controller of [7]); a guide
@@ -642,6 +660,8 @@ Executive::Advance Executive::rebuild(Activity& a, double radius, const Point& c
   }
   a.built = true;
   a.built_version = map_.version();
+  a.checked_version = map_.version();
+  if (p_.robust.defer) a.built_map = MapSnapshot::of(map_);
   a.built_target = target;
   a.built_radius = radius;
   a.goal = controller_.goal();

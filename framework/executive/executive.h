@@ -46,6 +46,7 @@
 
 #include "executive/guide_path.h"
 #include "executive/interface_layer.h"
+#include "executive/map_news.h"
 #include "executive/plant.h"
 #include "executive/progress_monitor.h"
 #include "executive/region.h"
@@ -261,6 +262,16 @@ struct RobustParams {
   // layer's choice (paper §V-B), not the task's, and the nearest clear point may lie past a
   // wall of unknown obstacles the robot had not seen when it chose it.
   bool redrop = true;
+  // Deferred rebuilds (docs/executive.md "Deferred rebuilds"): a new map version rebuilds the
+  // diffeomorphism only once what the map newly marks as obstacle (map_news.h) lies within
+  // rebuild_margin of the disk the law keeps clear (the robot's, or the pair's, dilation
+  // radius about its centre); until then the law runs on the previous build, whose obstacles
+  // near the robot are those of the current map. The paper rebuilds at every map change: the
+  // sensor reports new fragment parts at about its range R, where they do not yet constrain the
+  // robot, and each rebuild costs milliseconds (the mapped space's exact Booleans, the
+  // partitions and trees of the diffeomorphism).
+  bool defer = true;
+  double rebuild_margin = 1.0;       // m beyond the dilation radius
   double withdraw_clearance = 0.25;  // m beyond the pair's dilation radius
   double withdraw_max = 1.0;         // m of straight reverse travel at most
   int max_back_outs = 4;             // per action
@@ -444,6 +455,13 @@ class Executive {
     bool built = false;
     Point built_target = Point::Zero();
     double built_radius = 0;
+    std::uint64_t checked_version = 0;  // the map version the approach point was checked for
+    // RobustParams::defer: the map the diffeomorphism was built for, and the distance of the
+    // news since then from the centre `news_at`, computed for map version `news_version`.
+    MapSnapshot built_map;
+    std::uint64_t news_version = 0;
+    double news = std::numeric_limits<double>::infinity();
+    Point news_at = Point::Zero();
     Point goal = Point::Zero();  // x* as the controller holds it (snapped onto F_k)
     ProgressMonitor monitor;
     // Robust-variant state: the guide's remaining waypoints (x* excluded), recoveries used, the
@@ -536,6 +554,8 @@ class Executive {
   std::optional<Advance> face(Activity& a, const Pose& pose, const Point& nav, double t, double dt);
   Advance plan(Activity& a, const Pose& pose);
   Advance plan_grasp(Activity& a, const Pose& pose);
+  // Must the diffeomorphism be rebuilt for the map's news (RobustParams::defer)?
+  bool stale(Activity& a, double radius, const Point& center);
   Advance rebuild(Activity& a, double radius, const Point& center, double t);
   Advance recover(Activity& a, const Pose& pose, const Point& center, const std::string& why,
                   double t, double dt);

@@ -80,6 +80,8 @@ executive::TaskSpec task_spec(const scenario::Scenario& s) {
   e.robust.memory = s.controller.memory;
   e.robust.persist = s.controller.persist;
   e.robust.redrop = s.controller.redrop;
+  e.robust.defer = s.controller.defer;
+  e.robust.rebuild_margin = s.controller.rebuild_margin;
   if (s.controller.variant == "paper") e.robust.contact_margin = 0;
   e.max_ltl_actions = s.simulation.max_actions;
   return t;

@@ -37,6 +37,10 @@
 namespace rearm::reactive {
 
 // h(x), its Jacobian J = Dh(x) and second derivatives H[k](i, j) = ∂²h_k / ∂x_i ∂x_j.
+// How much of an evaluation to compute: h alone, h and Dh, or h, Dh and D²h (the fields not
+// computed keep their defaults). h and Dh are the same, bit for bit, at every order.
+enum class DiffeoOrder { kValue, kJacobian, kHessian };
+
 struct DiffeoEval {
   Point h = Point::Zero();
   Eigen::Matrix2d J = Eigen::Matrix2d::Identity();
@@ -99,10 +103,13 @@ class Diffeomorphism {
 
   // h, Dh, D²h at x. x must be a finite point of the freespace (not checked on this path;
   // inside an obstacle the value is defined but meaningless). No allocation.
-  DiffeoEval evaluate(const Point& x) const { return evaluate(x, purges_.size()); }
+  DiffeoEval evaluate(const Point& x, DiffeoOrder order = DiffeoOrder::kHessian) const {
+    return evaluate(x, purges_.size(), order);
+  }
   // The composition of the first `count` purges only (the intermediate spaces of §3.8).
-  DiffeoEval evaluate(const Point& x, std::size_t count) const;
-  Point map(const Point& x) const { return evaluate(x).h; }
+  DiffeoEval evaluate(const Point& x, std::size_t count,
+                      DiffeoOrder order = DiffeoOrder::kHessian) const;
+  Point map(const Point& x) const { return evaluate(x, DiffeoOrder::kValue).h; }
 
   const ModelSpace& model() const { return model_; }
   const std::vector<Purge>& purges() const { return purges_; }

@@ -143,7 +143,7 @@ Twist ReactiveController::unicycle(const Pose& pose, double dt) {
   const double allowed = 2 * nav_.k_omega * std::abs(scratch_.t_w) * dt + kHeadingGuardSlack;
   for (int k = 0; k < kSafetyHalvings; ++k, u = Twist{u.v / 2, u.omega / 2}) {
     const Pose next = unicycle_step(pose, u, dt);
-    const DiffeoEval en = diffeo_->evaluate(next.x);
+    const DiffeoEval en = diffeo_->evaluate(next.x, DiffeoOrder::kJacobian);
     if (!geometry::convex_contains(scratch_.lf, en.h)) continue;
     const Point e1 = en.J * Point(std::cos(next.psi), std::sin(next.psi));
     const double turn =

@@ -83,6 +83,10 @@ struct Controller {
   bool memory = true;           // robust only: guide paths avoid what was seen of unknown obstacles
   bool persist = true;          // robust only: guides that bring the robot closer renew the budget
   bool redrop = true;           // robust only: an unreachable drop point is chosen again
+  bool defer = true;            // robust only: rebuild once the map's news comes near
+  // m: with `defer` on, the margin beyond the dilation radius within which the map's news
+  // forces a rebuild (executive::RobustParams::rebuild_margin).
+  double rebuild_margin = 1.0;
 };
 
 // The robust variant's switches by key (scenario files; the ablation methods "rearm-no<key>").
@@ -100,7 +104,8 @@ inline constexpr RobustSwitch kRobustSwitches[] = {
     {"track", &Controller::track},         {"escape", &Controller::escape},
     {"widen", &Controller::widen},         {"scan", &Controller::scan},
     {"fragments", &Controller::fragments}, {"memory", &Controller::memory},
-    {"persist", &Controller::persist},     {"redrop", &Controller::redrop}};
+    {"persist", &Controller::persist},     {"redrop", &Controller::redrop},
+    {"defer", &Controller::defer}};
 
 // Sets the variant ("robust" or "paper") and every switch: all on, or all off.
 inline void set_variant(Controller& c, const std::string& variant) {

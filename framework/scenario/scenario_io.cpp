@@ -104,7 +104,9 @@ void read_controller(Reader& r, const YAML::Node& n, Controller& c) {
                   "fragments",
                   "memory",
                   "persist",
-                  "redrop"});
+                  "redrop",
+                  "defer",
+                  "rebuild_margin"});
   struct Field {
     const char* key;
     double* value;
@@ -117,7 +119,8 @@ void read_controller(Reader& r, const YAML::Node& n, Controller& c) {
                           {"k_omega", &c.k_omega},
                           {"goal_tolerance", &c.goal_tolerance},
                           {"fragment_tolerance", &c.fragment_tolerance},
-                          {"scan_spacing", &c.scan_spacing}};
+                          {"scan_spacing", &c.scan_spacing},
+                          {"rebuild_margin", &c.rebuild_margin}};
   for (const auto& [key, value] : fields) {
     if (auto v = f.find(key)) *value = r.number(*v, f.child(key));
   }
@@ -284,7 +287,8 @@ std::string to_yaml(const Scenario& s) {
       << ", mu2: " << num(c.mu2) << ", k_v: " << num(c.k_v) << ", k_omega: " << num(c.k_omega)
       << ", goal_tolerance: " << num(c.goal_tolerance)
       << ", fragment_tolerance: " << num(c.fragment_tolerance)
-      << ", scan_spacing: " << num(c.scan_spacing) << ", variant: " << c.variant;
+      << ", scan_spacing: " << num(c.scan_spacing) << ", rebuild_margin: " << num(c.rebuild_margin)
+      << ", variant: " << c.variant;
   if (c.variant == "robust") {
     for (const RobustSwitch& w : kRobustSwitches) {
       out << ", " << w.key << ": " << (c.*w.flag ? "true" : "false");

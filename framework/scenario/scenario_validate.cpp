@@ -232,6 +232,10 @@ class Validator {
     positive(c.goal_tolerance, "controller.goal_tolerance");
     positive(c.fragment_tolerance, "controller.fragment_tolerance");
     positive(c.scan_spacing, "controller.scan_spacing");
+    finite(c.rebuild_margin, "controller.rebuild_margin");
+    if (c.rebuild_margin < 0) {
+      fail("controller.rebuild_margin", "must be >= 0, got " + num(c.rebuild_margin));
+    }
   }
 
   void simulation() const {

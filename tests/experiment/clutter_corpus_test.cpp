@@ -107,8 +107,12 @@ TEST_P(ClutterCorpus, CompletesSafelyWithEveryObjectInItsGoal) {
             << t.sim_time << " s simulated, " << t.fix_mode_entries << " Fix mode entries\n";
   if (known_stuck(GetParam())) {
     EXPECT_EQ(t.collisions, 0) << (t.collision_events.empty() ? "" : t.collision_events.front());
-    EXPECT_EQ(t.status, executive::TaskStatus::kStuck)
-        << "it completes now: remove it from tests/corpus/known_stuck.txt";
+    EXPECT_TRUE(t.status == executive::TaskStatus::kStuck ||
+                t.status == executive::TaskStatus::kInfeasible)
+        << executive::to_string(t.status)
+        << (t.status == executive::TaskStatus::kCompleted
+                ? ": it completes now, remove it from tests/corpus/known_stuck.txt"
+                : "");
     return;
   }
   ASSERT_EQ(t.status, executive::TaskStatus::kCompleted) << t.reason;

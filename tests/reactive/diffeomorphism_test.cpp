@@ -160,6 +160,34 @@ TEST(Diffeomorphism, DerivativesMatchFiniteDifferences) {
   EXPECT_GT(deformed, checked / 3);
 }
 
+// The value-only and Jacobian-only evaluations (the safety filter's) compute h and Dh with the
+// same operations as the full one, which the finite differences above check: bit for bit equal.
+TEST(Diffeomorphism, LowerOrdersGiveTheSameValueAndJacobian) {
+  const int scenes = static_cast<int>(scaled(30, 3));
+  int deformed = 0;
+  for (int i = 0; i < scenes; ++i) {
+    const Built b = scene(i);
+    Rng rng = Rng::derive(7, static_cast<std::uint64_t>(i));
+    for (int k = 0; k < 24; ++k) {
+      Point x = random_free_point(rng, b.mapped, 1e-3);
+      for (int t = 0; t < 200 && d_is_identity(b.diffeo, x); ++t) {
+        x = random_free_point(rng, b.mapped, 1e-3);  // a point in a collar
+      }
+      const DiffeoEval full = b.diffeo.evaluate(x);
+      const DiffeoEval first = b.diffeo.evaluate(x, DiffeoOrder::kJacobian);
+      const DiffeoEval value = b.diffeo.evaluate(x, DiffeoOrder::kValue);
+      EXPECT_EQ(value.h, full.h) << "scene " << i << " x " << x.transpose();
+      EXPECT_EQ(b.diffeo.map(x), full.h);
+      EXPECT_EQ(first.h, full.h);
+      EXPECT_EQ(first.J, full.J);
+      EXPECT_EQ(value.J, Eigen::Matrix2d::Identity());  // not computed: the default
+      EXPECT_EQ(first.H[0], Eigen::Matrix2d::Zero());
+      deformed += full.h != x;
+    }
+  }
+  EXPECT_GT(deformed, scenes * 12);
+}
+
 TEST(Diffeomorphism, DeterminantPositiveOnFreespaceGrid) {
   const int scenes = static_cast<int>(scaled(50, 2));
   const double spacing = test_support::test_scale() < 1 ? 0.5 : 0.1;

@@ -138,6 +138,7 @@ void expect_same(const Scenario& a, const Scenario& b) {
   EXPECT_EQ(a.controller.goal_tolerance, b.controller.goal_tolerance);
   EXPECT_EQ(a.controller.fragment_tolerance, b.controller.fragment_tolerance);
   EXPECT_EQ(a.controller.scan_spacing, b.controller.scan_spacing);
+  EXPECT_EQ(a.controller.rebuild_margin, b.controller.rebuild_margin);
   EXPECT_EQ(a.simulation.dt, b.simulation.dt);
   EXPECT_EQ(a.simulation.time_budget, b.simulation.time_budget);
   EXPECT_EQ(a.simulation.velocity_iterations, b.simulation.velocity_iterations);
@@ -512,6 +513,12 @@ TEST(ScenarioErrors, UnknownKey) {
   expect_error(std::string(kBase) + "simulation: {steps: 3}\n", "simulation.steps", "unknown key");
   expect_error(std::string(kBase) + "controller: {scan_spacing: -0.1}\n", "controller.scan_spacing",
                "must be");
+  expect_error(std::string(kBase) + "controller: {rebuild_margin: -1}\n",
+               "controller.rebuild_margin", "must be >= 0");
+  expect_error(std::string(kBase) + "controller: {rebuild_margin: .inf}\n",
+               "controller.rebuild_margin", "must be a finite number");
+  expect_error(std::string(kBase) + "controller: {variant: paper, defer: true}\n",
+               "controller.defer", "the paper variant runs no extension");
 }
 
 TEST(ScenarioErrors, RepeatedKey) {
@@ -863,12 +870,13 @@ TEST(ScenarioRoundTrip, WrittenForm) {
       "unknown: []\n"
       "task: \"<>move(l1)\"\n"
       "controller: {p: 20, epsilon: 1, mu1: 1, mu2: 0.05, k_v: 1, k_omega: 1, "
-      "goal_tolerance: 0.05, fragment_tolerance: 0.1, scan_spacing: 0.2, variant: robust, "
+      "goal_tolerance: 0.05, fragment_tolerance: 0.1, scan_spacing: 0.2, rebuild_margin: 1, "
+      "variant: robust, "
       "guide: true, "
       "convex_fallback: true, back_out: true, restore: true, drop: true, "
       "early_release: true, withdraw: true, release_point: true, bevel: true, early_dock: true, "
       "face: true, narrow: true, track: true, escape: true, widen: true, scan: true, fragments: "
-      "true, memory: true, persist: true, redrop: true}\n"
+      "true, memory: true, persist: true, redrop: true, defer: true}\n"
       "simulation: {dt: 0.01, time_budget: 1200, velocity_iterations: 8, "
       "position_iterations: 3, max_actions: 0}\n");
 }
@@ -984,6 +992,7 @@ Scenario random_scenario(std::uint64_t seed) {
   s.controller.k_omega = rng.uniform(0.1, 5);
   s.controller.goal_tolerance = rng.uniform(1e-3, 0.2);
   s.controller.fragment_tolerance = rng.uniform(1e-3, 0.2);
+  s.controller.rebuild_margin = rng.uniform(0, 3);
   s.simulation.dt = rng.uniform(1e-4, 0.05);
   s.simulation.time_budget = rng.uniform(10, 5000);
   s.simulation.velocity_iterations = static_cast<int>(rng.uniform_int(1, 20));
