@@ -10,7 +10,7 @@
 # debian12-2core), BUILD (default build), OLD_BUILD (an existing build of the old revision,
 # skips the worktree). The instances are results/$MACHINE/speed/instances/,
 # nine of the scaling sweep's (experiments/sweeps/scaling.yaml) across N and density; the
-# old binary takes about 1 min on them.
+# old binary takes about 1 min on them (three runs each: about 6 min in all).
 set -euo pipefail
 OLD_REV=${1:?usage: bench_speed.sh OLD_REVISION}
 source "$(dirname "$0")/lib/bench_common.sh"
@@ -47,14 +47,14 @@ print(f"{name},{version},{m['status']},{m['sim_time_s']:.2f},{m['rebuilds']},"
       f"{m['controller_time_s']:.4f},{h}")
 PY
 }
-for f in "$SPEED"/instances/*.yaml; do
-  n=$(basename "$f" .yaml)
-  run old "$OLD" "$f" "$n"
-  run new "$NEW" "$f" "$n"
-done
+# Three alternating runs of each (the table takes the fastest): single runs on a shared VM
+# varied by up to 1.4x between two invocations.
 for k in 1 2 3; do
-  run old "$OLD" experiments/scenarios/fig5.yaml fig5
-  run new "$NEW" experiments/scenarios/fig5.yaml fig5
+  for f in "$SPEED"/instances/*.yaml experiments/scenarios/fig5.yaml; do
+    n=$(basename "$f" .yaml)
+    run old "$OLD" "$f" "$n"
+    run new "$NEW" "$f" "$n"
+  done
 done
 
 FILTER='(MappedSpace|DiffeoConstruction|ReactiveRebuild|UnicycleCommand)/K:(10|20)/'
