@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <utility>
 
+#include "geometry/convex.h"
 #include "geometry/distance.h"
 
 namespace rearm::executive {
@@ -18,42 +20,19 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // the robot the obstacle's far side is); new parts thinner than this are not news.
 constexpr double kSharedEdge = 1e-7;
 
-double cross(const Point& a, const Point& b) { return a.x() * b.y() - a.y() * b.x(); }
-
 double segment_distance(const Point& a, const Point& b, const Point& x) {
   return (geometry::nearest_on_segment(a, b, x) - x).norm();
 }
 
 // The parameter interval [t0, t1] of a + t (b − a), t in [0, 1], inside the convex polygon p
-// shrunk by `inset` (m; Cyrus–Beck); t0 > t1 when the segment misses it. With inset > 0 an edge
-// that p shares with another fragment of the same obstacle (collinear up to rounding) stays
-// out of p even where rounding puts it a hair inside.
+// shrunk by `inset` (m; geometry::line_interval); t0 > t1 when the segment misses it. With
+// inset > 0 an edge that p shares with another fragment of the same obstacle (collinear up to
+// rounding) stays out of p even where rounding puts it a hair inside.
 std::pair<double, double> inside_interval(const Polygon& p, const Point& a, const Point& b,
                                           double inset = 0) {
-  double twice_area = 0;  // the orientation, so a clockwise polygon is read correctly too
-  for (std::size_t i = 0, n = p.size(); i < n; ++i) {
-    twice_area += cross(p.vertices[i], p.vertices[(i + 1) % n]);
-  }
-  const double side = twice_area < 0 ? -1 : 1;
-  double t0 = 0, t1 = 1;
-  for (std::size_t i = 0, n = p.size(); i < n && t0 <= t1; ++i) {
-    const Point& u = p.vertices[i];
-    const Point e = p.vertices[(i + 1) % n] - u;
-    // >= 0: a on the inner side of this edge, inset from it
-    const double at = side * cross(e, a - u) - inset * e.norm();
-    const double slope = side * cross(e, b - a);
-    if (slope == 0) {
-      if (at < 0) return {1, 0};
-      continue;
-    }
-    const double t = -at / slope;
-    if (slope > 0) {
-      t0 = std::max(t0, t);
-    } else {
-      t1 = std::min(t1, t);
-    }
-  }
-  return {t0, t1};
+  const std::optional<geometry::Interval> on = geometry::line_interval(p, a, b - a, inset);
+  if (!on) return {1, 0};
+  return {std::max(0.0, on->lo), std::min(1.0, on->hi)};
 }
 
 bool inside(const Polygon& p, const Point& x) {

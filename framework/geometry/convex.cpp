@@ -96,7 +96,8 @@ Point project_onto_convex(const Polygon& convex, const Point& q) {
   return best;
 }
 
-std::optional<Interval> line_interval(const Polygon& convex, const Point& o, const Point& d) {
+std::optional<Interval> line_interval(const Polygon& convex, const Point& o, const Point& d,
+                                      double inset) {
   double lo = -std::numeric_limits<double>::infinity();
   double hi = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0, n = convex.size(); i < n; ++i) {
@@ -104,7 +105,7 @@ std::optional<Interval> line_interval(const Polygon& convex, const Point& o, con
     const double len = h.normal.norm();
     if (len <= kDegenerateEdge) continue;
     h.normal /= len;
-    h.offset /= len;
+    h.offset = h.offset / len - inset;
     // h.value(o + t d) = h.value(o) + t (normal·d) <= 0
     const double f0 = h.value(o);
     const double fd = h.normal.dot(d);

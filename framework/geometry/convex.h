@@ -47,13 +47,14 @@ bool convex_contains(const Polygon& convex, const Point& q, double tol = 0);
 // with o + t·d in the polygon, or nullopt when o is outside.
 std::optional<double> ray_exit(const Polygon& convex, const Point& o, const Point& d);
 
-// The interval [t_lo, t_hi] of t with o + t·d in the convex polygon, or nullopt when the line
-// misses it.
+// The interval [t_lo, t_hi] of t with o + t·d in the convex polygon (counter-clockwise) shrunk by
+// `inset` (m; negative grows it), or nullopt when the line misses it.
 struct Interval {
   double lo = 0;
   double hi = 0;
 };
-std::optional<Interval> line_interval(const Polygon& convex, const Point& o, const Point& d);
+std::optional<Interval> line_interval(const Polygon& convex, const Point& o, const Point& d,
+                                      double inset = 0);
 
 // Convex hull (Andrew's monotone chain), counter-clockwise, collinear points dropped.
 Polygon convex_hull(std::vector<Point> points);
