@@ -271,6 +271,7 @@ Command Executive::step(const Pose& pose, double t, double dt) {
     }
     switch (r.kind) {
       case Advance::kCommand:
+        last_u_ = r.u;
         return Command{r.u, gripper_, gripper_object_};
       case Advance::kRestart:
         break;
@@ -294,6 +295,7 @@ Command Executive::step(const Pose& pose, double t, double dt) {
                " action transitions in one tick (at " + current_action() + ")",
            t);
   }
+  last_u_ = Twist{};
   return Command{Twist{}, gripper_, gripper_object_};
 }
 
@@ -478,11 +480,16 @@ Executive::Advance Executive::withdraw(Activity& a, const Pose& pose, double t, 
   return out;
 }
 
-// RELEASE, DISASSEMBLE: the robot stood still for one tick (so the object is at rest when it is
-// let go); now the gripper opens, and the map must say so on the next tick.
+// RELEASE, DISASSEMBLE: the gripper opens once the robot stood still for one tick (so the object
+// is at rest when it is let go: one let go while the pair moved slides on, Box2D's damping
+// stopping it only after v/5 s, and can strike the robot that stops or turns), and the map must
+// say so on the next tick. Every way into this phase asks for the stop; this check keeps it
+// true where two actions end in one tick (a withdrawal ending as the DISASSEMBLE that needed
+// the grasp stops at once).
 Executive::Advance Executive::open(Activity& a, double t) {
   Advance out;
   if (map_.carried()) {
+    if (last_u_.v != 0 || last_u_.omega != 0) return out;  // stop this tick, open the next
     if (!a.open_sent) {
       gripper_ = GripperAction::kOpen;
       a.open_sent = true;

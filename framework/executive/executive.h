@@ -634,6 +634,7 @@ class Executive {
   int ltl_done_ = 0;
   int topology_checks_ = 0;
   bool law_command_ = false;  // the last step's command came from the reactive law
+  Twist last_u_;              // the last step's command (open() lets go only after a stop)
   ComputeTimes times_;
   RecoveryCounts recoveries_;
   std::map<std::string, std::string> placed_;  // object → region of its last LTL release

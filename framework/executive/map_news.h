@@ -36,8 +36,4 @@ struct MapSnapshot {
 // 1e-12 m, far below any margin it is compared with.
 double news_distance(const MapSnapshot& then, const perception::SemanticMap& now, const Point& x);
 
-// Distance from x to the closure of B \ A for convex counter-clockwise polygons A and B (A
-// may be empty: the distance to B; sensor fragments are counter-clockwise). Exposed for tests.
-double convex_difference_distance(const Polygon& a, const Polygon& b, const Point& x);
-
 }  // namespace rearm::executive

@@ -23,8 +23,10 @@ double seconds_since(Clock::time_point start) {
 }
 
 // TaskOptions::check_invariants: throws InvariantViolation on the first broken invariant.
-// `clearance` is the plant's at this tick (the command has not acted yet).
-void check_tick(const Command& cmd, double clearance, const Executive& exec, double t) {
+// `clearance` is the plant's at this tick (the command has not acted yet), `previous` the command
+// of the tick before.
+void check_tick(const Command& cmd, const Twist& previous, double clearance, const Executive& exec,
+                double t) {
   auto fail = [&](const std::string& what) {
     throw InvariantViolation("invariant broken at t = " + significant(t, 6) + " s during " +
                              exec.current_action() + ": " + what);
@@ -39,6 +41,10 @@ void check_tick(const Command& cmd, double clearance, const Executive& exec, dou
          " m)");
   }
   if (std::optional<std::string> why = exec.law_invariant_violation()) fail(*why);
+  if (cmd.gripper == GripperAction::kOpen && (previous.v != 0 || previous.omega != 0)) {
+    fail("the gripper opened after a tick in motion, (v, omega) = (" + significant(previous.v, 6) +
+         ", " + significant(previous.omega, 6) + ")");
+  }
 }
 
 }  // namespace
@@ -71,6 +77,7 @@ TaskResult run_task(const TaskSpec& spec, Plant& plant, const TaskOptions& o) {
   for (std::size_t i = 0; i < n; ++i) last_center[i] = plant.object_center(i);
   if (o.record_path) res.object_paths.resize(n);
   double t = 0;
+  Twist previous;  // the last tick's command
   const long max_steps = static_cast<long>(std::ceil(o.max_time / o.dt));
   for (long k = 0;; ++k) {
     const Pose pose = plant.pose();
@@ -88,7 +95,8 @@ TaskResult run_task(const TaskSpec& spec, Plant& plant, const TaskOptions& o) {
     const Clock::time_point c0 = Clock::now();
     const Command cmd = exec.step(pose, t, o.dt);
     res.controller_time += seconds_since(c0);
-    if (o.check_invariants) check_tick(cmd, clearance, exec, t);
+    if (o.check_invariants) check_tick(cmd, previous, clearance, exec, t);
+    previous = cmd.u;
     // The gripper acts; perception records what it holds (a failed grip holds nothing, and the
     // executive ends the grasp stuck on the next tick).
     if (cmd.gripper == GripperAction::kClose) {

@@ -36,8 +36,9 @@ struct TaskOptions {
   // Checked mode: after every tick's command, the closed loop's invariants: (v, ω) finite; the
   // robot and the object it holds (the plant's ground-truth clearance) overlapping nothing by
   // more than kInvariantSlop; and, for the reactive law's commands, det Dh > 0 at the centre
-  // and its model point strictly inside the model freespace (Executive::law_invariant_violation).
-  // A violation throws rearm::InvariantViolation naming the time, the action and the breach.
+  // and its model point strictly inside the model freespace (Executive::law_invariant_violation);
+  // the gripper opening only after a tick at rest (v = ω = 0: a pair let go while moving slides
+  // on). A violation throws rearm::InvariantViolation naming the time, the action and the breach.
   bool check_invariants = false;
 };
 

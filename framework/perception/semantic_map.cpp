@@ -10,6 +10,7 @@
 #include "core/error.h"
 #include "geometry/box.h"
 #include "geometry/convex.h"
+#include "geometry/convex_difference.h"
 
 namespace rearm::perception {
 namespace {
@@ -53,6 +54,14 @@ bool fragment_changed(const std::vector<Point>& a, const std::vector<Point>& b, 
     if (same) return false;
   }
   return !(covered(a, b, tol2) && covered(b, a, tol2));
+}
+
+// True when the convex fragment `now` adds to `then` a part within `near` of x (both non-empty;
+// an empty one is fragment_changed's case).
+bool grew_near(const std::vector<Point>& then, const std::vector<Point>& now, const Point& x,
+               double near) {
+  if (then.size() < 3 || now.size() < 3 || then == now) return false;
+  return geometry::convex_difference_distance(Polygon{then}, Polygon{now}, x) <= near;
 }
 
 void check_tolerance(double v, const char* what) {
@@ -152,7 +161,10 @@ bool SemanticMap::update(const Point& robot) {
     } else {
       c.clear();
     }
-    if (!fragments_changed) fragments_changed = fragment_changed(c, visible_[j], tol_.fragment);
+    if (!fragments_changed) {
+      fragments_changed = fragment_changed(c, visible_[j], tol_.fragment) ||
+                          grew_near(visible_[j], c, robot, range * kFragmentNearFraction);
+    }
   }
   if (fragments_changed) {
     std::swap(visible_, candidate_);

@@ -28,6 +28,13 @@ namespace rearm::perception {
 // versa. A moving robot changes its fragments continuously and that is intended; a robot
 // standing still (or jittering by rounding) changes nothing.
 inline constexpr double kFragmentTolerance = 1e-3;
+// Whatever the tolerance, a fragment changes when it grew (geometry/convex_difference.h) within
+// this fraction of the sensing range R of the robot: the tolerance is there for the growth where
+// the footprint cuts an obstacle, about R away, and must not hide an obstacle's corner that the
+// footprint cut off earlier and the robot now approaches (a 0.1 m tolerance let the law's local
+// freespace reach 0.1 m into such a corner, and the robot touched it). With scan_spacing at most
+// R/4, what the map misses stays at least R/4 from the robot.
+inline constexpr double kFragmentNearFraction = 0.5;
 // A movable object moved (bumping the version) when its centre is farther than this (m) from
 // where the map last reported it; slower motion accumulates until it crosses the tolerance.
 inline constexpr double kObjectMoveTolerance = 1e-3;

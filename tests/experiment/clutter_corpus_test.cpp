@@ -31,7 +31,10 @@
 // drop point (RobustParams::redrop) each completes it alone. tests/corpus/hardening holds
 // instances of the hardening run (experiments/sweeps/hardening.yaml) that stopped the process:
 // one whose Boolean result had a component that rounding to doubles collapsed to a sliver with
-// no positive loop (geometry/boolean.cpp).
+// no positive loop (geometry/boolean.cpp); and two in which the robot touched a flat-faced
+// unknown obstacle by up to 0.5 mm: the map's fragment (fragment tolerance 0.1 m) kept missing
+// a corner the footprint had cut off while the robot drove up to it (perception/semantic_map.h,
+// kFragmentNearFraction).
 // Every tick runs in the checked mode (executive/task_runner.h). Truth: the Box2D world's contact
 // accounting and the simulator's object positions, located
 // exactly in the goal regions.

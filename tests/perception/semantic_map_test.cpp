@@ -7,10 +7,12 @@
 
 #include <cmath>
 #include <cstdint>
+#include <numbers>
 #include <string>
 #include <vector>
 
 #include "core/error.h"
+#include "core/rng.h"
 #include "perception_oracle.h"
 
 namespace rearm::perception {
@@ -207,6 +209,59 @@ TEST(SemanticMapTest, ScanSpacingReadsFragmentsEverySpacingOfTravel) {
   // A spacing over a quarter of the sensing range is refused.
   tol.scan_spacing = kR / 4 + 1e-9;
   EXPECT_THROW(SemanticMap(scene(), Sensor({.range = kR}), tol), Error);
+}
+
+// With the runs' fragment tolerance (0.1 m) and scan spacing (0.2 m), a random convex obstacle
+// that the robot walks past: after every update, each point of the true obstacle's boundary
+// within R/2 - s of the robot lies in the map's fragment (kFragmentNearFraction). Without that
+// rule a corner the footprint cut off by less than the tolerance stayed cut off while the robot
+// drove up to it. Truth: points sampled on the true polygon's edges, located against the
+// fragment's edge lines (oracle::convex_excess).
+TEST(SemanticMapTest, NothingNearTheRobotIsMissingFromItsFragment) {
+  constexpr double kRange = 3.0, kSpacing = 0.2, kTol = 0.1;
+  const double reach = kRange * kFragmentNearFraction - kSpacing;
+  ChangeTolerances tol;
+  tol.fragment = kTol;
+  tol.scan_spacing = kSpacing;
+  Rng rng(20261204);
+  int checked = 0, worst_trial = -1;
+  double worst = -1;
+  for (int trial = 0; trial < 200; ++trial) {
+    World w;
+    w.workspace = box(-20, -20, 20, 20);
+    const int n = static_cast<int>(rng.uniform_int(3, 8));
+    w.unknown.push_back(
+        {"C", oracle::random_convex(rng, n, rng.uniform(0.4, 2.0), rng.uniform(0.4, 2.0),
+                                    rng.uniform(0, std::numbers::pi), Point(0, 0))});
+    SemanticMap map(w, Sensor({.range = kRange}), tol);
+    // A straight walk from 6 m away, passing the obstacle's centre at 0.5 to 2.5 m (or through it).
+    const double heading = rng.uniform(0, 2 * std::numbers::pi);
+    const Point dir(std::cos(heading), std::sin(heading));
+    const Point side(-dir.y(), dir.x());
+    const Point start = -6.0 * dir + rng.uniform(0.5, 2.5) * side;
+    const Polygon& truth = w.unknown[0].polygon;
+    for (int k = 0; k <= 1200; ++k) {
+      const Point x = start + 0.01 * k * dir;
+      map.update(x);
+      for (std::size_t i = 0; i < truth.size(); ++i) {
+        const Point& a = truth.vertices[i];
+        const Point& b = truth.vertices[(i + 1) % truth.size()];
+        for (int j = 0; j <= 20; ++j) {
+          const Point p = a + (j / 20.0) * (b - a);
+          if ((p - x).norm() > reach) continue;
+          ASSERT_EQ(map.unknown().size(), 1u) << "trial " << trial << " step " << k;
+          const double e = convex_excess(map.unknown()[0], p);
+          if (e > worst) {
+            worst = e;
+            worst_trial = trial;
+          }
+          ++checked;
+        }
+      }
+    }
+  }
+  EXPECT_GT(checked, 10000);
+  EXPECT_LE(worst, 1e-9) << "trial " << worst_trial;
 }
 
 TEST(SemanticMapTest, ObjectMovesBelowToleranceAccumulate) {
