@@ -1,5 +1,5 @@
 // rearm plan --formula F [--initial ACTION] [--infeasible ACTION ...] [--objects ..]
-//            [--regions ..]
+//            [--regions ..] [--allow-negation] [--graph paper|selfloop] [--show-graph]
 // Runs the mission controller against a perfect executor (every action succeeds except the
 // listed ones) and prints the action lasso.
 #include <cstdio>
@@ -19,7 +19,8 @@ namespace {
 
 constexpr const char* kUsage =
     "usage: rearm plan --formula F [--initial ACTION] [--infeasible ACTION ...]\n"
-    "                  [--objects M1,M2,...] [--regions l1,l2,...] [--max-steps N]\n\n"
+    "                  [--objects M1,M2,...] [--regions l1,l2,...] [--max-steps N]\n"
+    "                  [--allow-negation] [--graph paper|selfloop] [--show-graph]\n\n"
     "Runs the online mission controller (paper Section III, Appendix I) against a perfect\n"
     "executor in which every action succeeds except the --infeasible ones, and prints the\n"
     "resulting action lasso:\n"
@@ -30,7 +31,16 @@ constexpr const char* kUsage =
     "  infeasible: <reason>\n\n"
     "ACTION is an action predicate: move(l), grasp(M) or release(M,l). --initial is the\n"
     "predicate holding at the start (the paper's pi_0; default: none). --objects and\n"
-    "--regions list the scenario's names; predicates naming others are errors.\n";
+    "--regions list the scenario's names; predicates naming others are errors.\n"
+    "The formula is in the paper's fragment (Section II-B): no X and no negation (! -> <->\n"
+    "xor), exit 2 otherwise. --allow-negation (beyond the paper) plans negation over Boolean\n"
+    "combinations of predicates; rearm run never accepts it (Fix mode could grasp or move\n"
+    "what the formula forbids, footnote 4).\n"
+    "--graph chooses G's construction: selfloop (default; the self-loopized automaton, which\n"
+    "also plans a symbol that cycles through states without self-loops) or paper (Appendix I-B\n"
+    "exactly: the multi-hop runs of Eq. 4). --show-graph prints G first: its nodes with d_F\n"
+    "(Eq. 7) and V_F (Eq. 6), its edges with the symbols driving them (Eq. 9), accepting\n"
+    "edges (Def. 3) marked.\n";
 
 constexpr std::size_t kDefaultMaxSteps = 100000;
 
@@ -59,6 +69,7 @@ int run_plan(const std::vector<std::string>& args) {
   symbolic::MissionOptions options;
   std::vector<symbolic::Action> infeasible;
   std::size_t max_steps = kDefaultMaxSteps;
+  bool show_graph = false;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     auto value = [&]() -> const std::string& { return option_value(args, i); };
@@ -75,6 +86,12 @@ int run_plan(const std::vector<std::string>& args) {
       while (i + 1 < args.size() && args[i + 1].rfind("--", 0) != 0) {
         infeasible.push_back(symbolic::Action::parse(args[++i]));
       }
+    } else if (a == "--graph") {
+      options.graph = symbolic::parse_graph_mode(value());
+    } else if (a == "--show-graph") {
+      show_graph = true;
+    } else if (a == "--allow-negation") {
+      options.allow_negation = true;
     } else if (a == "--objects") {
       options.vocabulary.objects = split_list(value());
     } else if (a == "--regions") {
@@ -94,6 +111,7 @@ int run_plan(const std::vector<std::string>& args) {
   for (const auto& a : infeasible) options.vocabulary.check(a);
 
   symbolic::MissionController mc(ltl::parse(formula), options);
+  if (show_graph) std::fputs(mc.graph().to_text().c_str(), stdout);
   auto is_infeasible = [&](const symbolic::Action& a) {
     for (const auto& b : infeasible) {
       if (a == b) return true;

@@ -64,6 +64,7 @@ TaskResult run_task(const TaskSpec& spec, Plant& plant, const TaskOptions& o) {
   for (const auto& m : world.movable) mo.vocabulary.objects.push_back(m.id);
   for (const auto& r : spec.regions) mo.vocabulary.regions.push_back(r.id);
   mo.translate = spec.translate;
+  mo.initial = spec.initial;
   const Clock::time_point mission_start = Clock::now();
   symbolic::MissionController mission(ltl::parse(spec.formula), mo);
   const double mission_setup = seconds_since(mission_start);

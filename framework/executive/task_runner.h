@@ -5,6 +5,7 @@
 // budget exhausted). The plant is the ground truth for collisions and clearance.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,7 @@
 #include "ltl/formula.h"
 #include "perception/sensor.h"
 #include "perception/world.h"
+#include "symbolic/action.h"
 
 namespace rearm::executive {
 
@@ -22,7 +24,8 @@ namespace rearm::executive {
 struct TaskSpec {
   perception::World world;
   std::vector<RegionOfInterest> regions;
-  std::string formula;  // an LTL formula over move(l), grasp(M), release(M,l)
+  std::string formula;                      // an LTL formula over move(l), grasp(M), release(M,l)
+  std::optional<symbolic::Action> initial;  // π0 (Appendix I-B); none: the empty symbol
   perception::SensorParams sensor{3.0};
   perception::ChangeTolerances map_tolerances;
   ExecutiveParams executive;

@@ -132,6 +132,9 @@ struct Scenario {
   std::vector<NamedPolygon> familiar;  // possibly non-convex
   std::vector<NamedPolygon> unknown;   // convex
   std::string task;                    // LTL formula text
+  // The predicate holding at the start (the paper's π0, Appendix I-B), e.g. "move(l1)"; empty:
+  // none (the empty symbol). Checked against the scene by the experiment layer.
+  std::string initial_predicate;
   Controller controller;
   Simulation simulation;
 };

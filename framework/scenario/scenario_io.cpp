@@ -159,7 +159,7 @@ void read_simulation(Reader& r, const YAML::Node& n, Simulation& s) {
 Scenario read_scenario(Reader& r, const YAML::Node& doc) {
   const Fields f(r, doc, "",
                  {"name", "description", "workspace", "robot", "regions", "objects", "familiar",
-                  "unknown", "task", "controller", "simulation"});
+                  "unknown", "task", "initial_predicate", "controller", "simulation"});
   Scenario s;
   s.source = r.source();
   s.name = r.text(f.require("name"), "name");
@@ -171,6 +171,9 @@ Scenario read_scenario(Reader& r, const YAML::Node& doc) {
   if (auto v = f.find("familiar")) s.familiar = read_named_polygons(r, *v, "familiar");
   if (auto v = f.find("unknown")) s.unknown = read_named_polygons(r, *v, "unknown");
   s.task = r.text(f.require("task"), "task");
+  if (auto v = f.find("initial_predicate")) {
+    s.initial_predicate = r.text(*v, "initial_predicate");
+  }
   if (auto v = f.find("controller")) read_controller(r, *v, s.controller);
   if (auto v = f.find("simulation")) read_simulation(r, *v, s.simulation);
   return s;
@@ -282,6 +285,9 @@ std::string to_yaml(const Scenario& s) {
   write_named(out, "familiar", s.familiar);
   write_named(out, "unknown", s.unknown);
   out << "task: " << yaml_string(s.task) << "\n";
+  if (!s.initial_predicate.empty()) {
+    out << "initial_predicate: " << yaml_string(s.initial_predicate) << "\n";
+  }
   const Controller& c = s.controller;
   out << "controller: {p: " << c.p << ", epsilon: " << num(c.epsilon) << ", mu1: " << num(c.mu1)
       << ", mu2: " << num(c.mu2) << ", k_v: " << num(c.k_v) << ", k_omega: " << num(c.k_omega)

@@ -14,15 +14,28 @@ bool is_temporal(ltl::Op op) {
          op == Op::Release || op == Op::WeakUntil || op == Op::StrongRelease;
 }
 
+bool is_negating(ltl::Op op) {
+  using ltl::Op;
+  return op == Op::Not || op == Op::Implies || op == Op::Equiv || op == Op::Xor;
+}
+
 // Walks f with the polarity of each occurrence (negative under an odd number of
-// negations; both under <-> and xor) and rejects X and negated temporal subformulas.
-void check_polarity(const ltl::Formula& f, bool negative, bool both) {
+// negations; both under <-> and xor) and rejects X, negated temporal subformulas, and (unless
+// allowed) every negation.
+void check_polarity(const ltl::Formula& f, bool negative, bool both, bool allow_negation) {
   using ltl::Op;
   if (f.op() == Op::Next) {
     throw Error(
         "X (next) is not allowed in a mission formula: the controller needs a "
         "stutter-invariant formula (paper Section II-B), found '" +
         f.to_string() + "'");
+  }
+  if (!allow_negation && is_negating(f.op())) {
+    throw Error("negation is not allowed in a mission formula, found '" + f.to_string() +
+                "': the paper's fragment has no negation (Section II-B), and Fix mode relies "
+                "on that (footnote 4): it grasps and moves whatever blocks the way, which could "
+                "be what the formula forbids (->, <-> and xor negate too; rearm plan "
+                "--allow-negation plans such formulas symbolically)");
   }
   if ((negative || both) && is_temporal(f.op())) {
     throw Error("negation over the temporal subformula '" + f.to_string() +
@@ -32,19 +45,21 @@ void check_polarity(const ltl::Formula& f, bool negative, bool both) {
   }
   switch (f.op()) {
     case Op::Not:
-      check_polarity(f.child(0), !negative, both);
+      check_polarity(f.child(0), !negative, both, allow_negation);
       return;
     case Op::Implies:
-      check_polarity(f.child(0), !negative, both);
-      check_polarity(f.child(1), negative, both);
+      check_polarity(f.child(0), !negative, both, allow_negation);
+      check_polarity(f.child(1), negative, both, allow_negation);
       return;
     case Op::Equiv:
     case Op::Xor:
-      check_polarity(f.child(0), negative, true);
-      check_polarity(f.child(1), negative, true);
+      check_polarity(f.child(0), negative, true, allow_negation);
+      check_polarity(f.child(1), negative, true, allow_negation);
       return;
     default:
-      for (const ltl::Formula& c : f.children()) check_polarity(c, negative, both);
+      for (const ltl::Formula& c : f.children()) {
+        check_polarity(c, negative, both, allow_negation);
+      }
   }
 }
 
@@ -62,15 +77,16 @@ const char* to_string(MissionStatus s) {
   return "?";
 }
 
-void check_mission_formula(const ltl::Formula& f, const Vocabulary& vocabulary) {
-  check_polarity(f, false, false);
+void check_mission_formula(const ltl::Formula& f, const Vocabulary& vocabulary,
+                           bool allow_negation) {
+  check_polarity(f, false, false, allow_negation);
   for (const std::string& ap : f.atomic_propositions()) {
     vocabulary.check(Action::parse(ap));  // throws for non-predicates and unknown names
   }
 }
 
 MissionController::MissionController(const ltl::Formula& formula, MissionOptions options) {
-  check_mission_formula(formula, options.vocabulary);
+  check_mission_formula(formula, options.vocabulary, options.allow_negation);
   std::vector<std::string> extra;
   if (options.initial) {
     options.vocabulary.check(*options.initial);
@@ -83,7 +99,9 @@ MissionController::MissionController(const ltl::Formula& formula, MissionOptions
   }
   excluded_ = ltl::LetterSet(nba_.alphabet.num_letters());
   reachable_ = read(nba_.initial, held_);  // π0 is the symbol at instant 0
-  graph_ = std::make_unique<MissionGraph>(nba_, MissionGraph::Start{{}, held_}, excluded_);
+  graph_ = std::make_unique<MissionGraph>(nba_, MissionGraph::Start{{}, held_}, excluded_,
+                                          options.graph);
+  mode_ = options.graph;
   if (graph_->d_f(node_) == MissionGraph::kInfinity) {
     set_infeasible(
         "the formula has no satisfying sequence of actions (no accepting cycle of "
@@ -239,7 +257,8 @@ void MissionController::rebuild() {
     set_infeasible("the actions performed so far leave no run of the automaton");
     return;
   }
-  graph_ = std::make_unique<MissionGraph>(nba_, MissionGraph::Start{reachable_, held_}, excluded_);
+  graph_ = std::make_unique<MissionGraph>(nba_, MissionGraph::Start{reachable_, held_}, excluded_,
+                                          mode_);
   node_ = graph_->start();
   ++generation_;
   graph_current_ = true;

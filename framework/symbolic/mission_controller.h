@@ -32,16 +32,23 @@ enum class MissionStatus {
 const char* to_string(MissionStatus s);
 
 // Rejects, with an explanation, what the mission controller cannot handle (the paper's
-// fragment, Section II-B): X anywhere; a negation (including the implicit ones of ->, <->
-// and xor) over a temporal subformula — negation is accepted only over Boolean combinations
-// of predicates; propositions that are not action predicates; and names unknown to a
-// non-empty vocabulary. Throws rearm::Error.
-void check_mission_formula(const ltl::Formula& f, const Vocabulary& vocabulary = {});
+// fragment, Section II-B): X anywhere; any negation (including the implicit ones of ->, <->
+// and xor: the paper excludes negation, and its Fix mode relies on that, footnote 4);
+// propositions that are not action predicates; and names unknown to a non-empty vocabulary.
+// allow_negation (beyond the paper, for symbolic planning only: the executive never sets it,
+// so Fix mode never meets a formula that forbids something) accepts negation over Boolean
+// combinations of predicates, still not over a temporal subformula. Throws rearm::Error.
+void check_mission_formula(const ltl::Formula& f, const Vocabulary& vocabulary = {},
+                           bool allow_negation = false);
 
 struct MissionOptions {
   std::optional<Action> initial;  // π0; none: the empty symbol
   Vocabulary vocabulary;          // empty: any names
   ltl::TranslateOptions translate;
+  bool allow_negation = false;  // check_mission_formula's extension (symbolic planning only)
+  // G's construction (mission_graph.h): the self-loopized automaton (complete, the default and
+  // the experiments' choice) or Appendix I-B exactly.
+  GraphMode graph = GraphMode::kSelfLoop;
 };
 
 class MissionController {
@@ -94,6 +101,7 @@ class MissionController {
   std::vector<std::uint32_t> reachable_;
   mutable std::vector<char> read_mark_;  // scratch of read()
   ltl::LetterSet excluded_;
+  GraphMode mode_ = GraphMode::kSelfLoop;
   std::unique_ptr<MissionGraph> graph_;
   std::uint32_t node_ = 0;
   std::uint32_t generation_ = 0;

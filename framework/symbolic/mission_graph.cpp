@@ -1,4 +1,15 @@
-// Construction of G (paper Appendix I-B) on the self-loopized automaton.
+// Construction of G (paper Appendix I-B), exactly (GraphMode::kPaper) or on the self-loopized
+// automaton (kSelfLoop).
+//
+// kPaper: a breadth-first search over the nodes reached from q_aux. From a node q and a
+// feasible symbol σ, a search over (automaton state, final state entered so far) follows σ
+// through states without a σ self-loop (Eq. 4, conditions i and ii) and stops at each state
+// with one (iii): an edge q -> q' under σ, accepting (Def. 3) when the run entered a final
+// state. The run's intermediate states repeat σ, so a path through a cycle of states without
+// σ self-loops reaches nothing a simple path does not. q_aux reads π0 (b^{q_aux,q0} = π0 and,
+// the run repeating one symbol, π0 again until a state with a π0 self-loop). The empty symbol
+// drives only q_aux's edges: after the first action the robot holds an action (the word
+// semantics of docs/symbolic.md), and before it q_aux's run already follows ε as far as it goes.
 //
 // Self-loopization (Michaud & Duret-Lutz, SPIN 2015, `sl`): a node is (q, h): automaton state
 // q entered while the robot holds letter h (its last completed action). Holding h longer is
@@ -22,6 +33,7 @@
 #include <algorithm>
 #include <map>
 #include <tuple>
+#include <utility>
 
 #include "core/error.h"
 #include "core/scc.h"
@@ -29,21 +41,146 @@
 namespace rearm::symbolic {
 using ltl::LetterSet;
 
-MissionGraph::MissionGraph(const ltl::ActionNba& nba, Start start, const LetterSet& excluded)
-    : nba_(&nba) {
+const char* to_string(GraphMode m) { return m == GraphMode::kPaper ? "paper" : "selfloop"; }
+
+GraphMode parse_graph_mode(const std::string& text) {
+  if (text == "paper") return GraphMode::kPaper;
+  if (text == "selfloop") return GraphMode::kSelfLoop;
+  throw Error("unknown graph construction '" + text + "' (expected paper or selfloop)");
+}
+
+MissionGraph::MissionGraph(const ltl::ActionNba& nba, Start start, const LetterSet& excluded,
+                           GraphMode mode)
+    : nba_(&nba), mode_(mode) {
   const std::size_t num_letters = nba.alphabet.num_letters();
   REARM_DEMAND(excluded.universe() == num_letters, "excluded letters of another alphabet");
   REARM_DEMAND(start.held_letter < num_letters, "held letter outside the alphabet");
   for (std::uint32_t q : start.states) {
     REARM_DEMAND(q < nba.num_states(), "unknown start state");
   }
-  // Real self-loop letters per automaton state.
-  std::vector<LetterSet> real_loop(nba.num_states(), LetterSet(num_letters));
-  for (std::uint32_t q = 0; q < nba.num_states(); ++q) {
-    for (const auto& e : nba.out[q]) {
-      if (e.dst == q) real_loop[q] |= e.guard;
+  if (mode == GraphMode::kPaper) {
+    build_paper(start, excluded);
+  } else {
+    build_selfloop(start, excluded);
+  }
+  distances();
+}
+
+// One edge per (src, dst, accepting): the symbols of one edge all drive an accepting run or
+// all a non-accepting one, so choosing any of them traverses the edge the controller chose.
+void MissionGraph::add_edge(std::uint32_t src, std::uint32_t dst, const LetterSet& letters,
+                            bool accepting) {
+  for (Edge& e : out_[src]) {
+    if (e.dst == dst && e.accepting == accepting) {
+      e.letters |= letters;
+      return;
     }
   }
+  out_[src].push_back(Edge{dst, letters, accepting, false});
+}
+
+namespace {
+
+// Per automaton state, the letters of its self-loop.
+std::vector<LetterSet> self_loops(const ltl::ActionNba& nba) {
+  std::vector<LetterSet> loop(nba.num_states(), LetterSet(nba.alphabet.num_letters()));
+  for (std::uint32_t q = 0; q < nba.num_states(); ++q) {
+    for (const auto& e : nba.out[q]) {
+      if (e.dst == q) loop[q] |= e.guard;
+    }
+  }
+  return loop;
+}
+
+// The ends of the runs of Eq. (4) from `from` reading `letter` at every step: each state with
+// a `letter` self-loop reached through states without one, with whether a final state was
+// entered on the way (both values when two runs differ). `from` itself is the run's q^0.
+std::vector<std::pair<std::uint32_t, bool>> runs_of(const ltl::ActionNba& nba,
+                                                    const std::vector<LetterSet>& loop,
+                                                    std::uint32_t from, std::size_t letter) {
+  std::vector<std::pair<std::uint32_t, bool>> ends;
+  std::vector<char> seen(2 * static_cast<std::size_t>(nba.num_states()), 0);
+  std::vector<std::pair<std::uint32_t, bool>> stack{{from, false}};
+  bool first = true;
+  while (!stack.empty()) {
+    const auto [q, acc] = stack.back();
+    stack.pop_back();
+    for (const auto& e : nba.out[q]) {
+      if (!e.guard.test(letter)) continue;
+      if (first && e.dst == q) continue;  // the source's own self-loop: added below
+      const bool entered = acc || nba.accepting[e.dst];
+      char& mark = seen[2 * static_cast<std::size_t>(e.dst) + (entered ? 1 : 0)];
+      if (mark) continue;
+      mark = 1;
+      if (loop[e.dst].test(letter)) {
+        ends.emplace_back(e.dst, entered);
+      } else {
+        stack.emplace_back(e.dst, entered);
+      }
+    }
+    first = false;
+  }
+  if (loop[from].test(letter)) ends.emplace_back(from, nba.accepting[from]);  // K = 1
+  return ends;
+}
+
+}  // namespace
+
+std::uint32_t MissionGraph::paper_node(std::uint32_t state,
+                                       std::vector<std::uint32_t>& id_of_state) {
+  if (id_of_state[state] == kInfinity) {
+    id_of_state[state] = static_cast<std::uint32_t>(nodes_.size());
+    nodes_.push_back(Node{state, -1, true});
+    out_.emplace_back();
+  }
+  return id_of_state[state];
+}
+
+// Appendix I-B exactly (see the file's head).
+void MissionGraph::build_paper(const Start& start, const LetterSet& excluded) {
+  const ltl::ActionNba& nba = *nba_;
+  const std::size_t num_letters = nba.alphabet.num_letters();
+  const std::vector<LetterSet> loop = self_loops(nba);
+  const LetterSet allowed = ~excluded;
+  std::vector<std::uint32_t> id_of_state(nba.num_states(), kInfinity);
+  nodes_.push_back(Node{kAux, -1, start.held_letter != 0});
+  out_.emplace_back();
+  const std::size_t h = start.held_letter;
+  const LetterSet held = LetterSet::single(num_letters, h);
+  // Node 0: q_aux reading π0 from the initial states, or (G rebuilt during the mission) the
+  // states the word performed so far can be in, holding its last letter.
+  if (start.states.empty()) {
+    // The run of Eq. (4) from q_aux: q^1 = q0, then π0 repeated until a π0 self-loop.
+    for (std::uint32_t q0 : nba.initial) {
+      if (loop[q0].test(h)) {
+        add_edge(0, paper_node(q0, id_of_state), held, nba.accepting[q0]);
+        continue;
+      }
+      for (const auto& [q, acc] : runs_of(nba, loop, q0, h)) {
+        add_edge(0, paper_node(q, id_of_state), held, acc || nba.accepting[q0]);
+      }
+    }
+  } else {
+    // start.states is closed under holding the letter: its states with a self-loop under it.
+    for (std::uint32_t q : start.states) {
+      if (loop[q].test(h)) add_edge(0, paper_node(q, id_of_state), held, false);
+    }
+  }
+  for (std::uint32_t v = 1; v < nodes_.size(); ++v) {
+    const std::uint32_t q = nodes_[v].state;
+    for (std::size_t a = allowed.next(1); a < num_letters; a = allowed.next(a + 1)) {
+      for (const auto& [q2, acc] : runs_of(nba, loop, q, a)) {
+        add_edge(v, paper_node(q2, id_of_state), LetterSet::single(num_letters, a), acc);
+      }
+    }
+  }
+}
+
+// The self-loopized construction (see the file's head).
+void MissionGraph::build_selfloop(const Start& start, const LetterSet& excluded) {
+  const ltl::ActionNba& nba = *nba_;
+  const std::size_t num_letters = nba.alphabet.num_letters();
+  const std::vector<LetterSet> real_loop = self_loops(nba);
   const LetterSet allowed = ~excluded;
   const LetterSet none_letter = LetterSet::single(num_letters, 0);
 
@@ -59,17 +196,6 @@ MissionGraph::MissionGraph(const ltl::ActionNba& nba, Start start, const LetterS
   };
   auto class_of = [&](std::uint32_t q, std::size_t h) -> std::int32_t {
     return real_loop[q].test(h) ? -1 : static_cast<std::int32_t>(h);
-  };
-  auto add_edge = [&](std::uint32_t src, std::uint32_t dst, const LetterSet& letters,
-                      bool accepting) {
-    for (Edge& e : out_[src]) {
-      if (e.dst == dst) {
-        e.letters |= letters;
-        e.accepting = e.accepting || accepting;
-        return;
-      }
-    }
-    out_[src].push_back(Edge{dst, letters, accepting, false});
   };
 
   const bool start_started = start.held_letter != 0;
@@ -119,7 +245,12 @@ MissionGraph::MissionGraph(const ltl::ActionNba& nba, Start start, const LetterS
       }
     }
   }
-  // Accepting edges inside an SCC define V_F (Def. 3, Eq. 6); d_F by reverse BFS (Eq. 7).
+}
+
+// Accepting edges inside an SCC define V_F (Def. 3, Eq. 6): an accepting edge that no cycle
+// contains (one out of q_aux) can be traversed once, not infinitely often. d_F by reverse BFS
+// (Eq. 7).
+void MissionGraph::distances() {
   const auto comp = strongly_connected_components(out_, [](const Edge& e) { return e.dst; });
   const std::uint32_t n = num_nodes();
   vf_.assign(n, false);
@@ -161,6 +292,45 @@ std::string MissionGraph::describe(std::uint32_t v) const {
   std::string s = n.state == kAux ? "q_aux" : "q" + std::to_string(n.state);
   if (n.split_letter >= 0) {
     s += "[holding " + nba_->alphabet.letter_name(static_cast<std::size_t>(n.split_letter)) + "]";
+  }
+  if (mode_ == GraphMode::kSelfLoop && n.state != kAux && !n.started) s += "[before acting]";
+  return s;
+}
+
+std::string MissionGraph::to_text() const {
+  const ltl::ActionNba& nba = *nba_;
+  std::string vf;
+  for (std::uint32_t v = 0; v < num_nodes(); ++v) {
+    if (vf_[v]) vf += (vf.empty() ? "" : ", ") + describe(v);
+  }
+  std::string s = std::string("G (") +
+                  (mode_ == GraphMode::kPaper ? "paper construction, Appendix I-B"
+                                              : "self-loopized automaton") +
+                  "): " + std::to_string(num_nodes()) + " nodes, " + std::to_string(num_edges()) +
+                  " edges, V_F = {" + vf + "}\n";
+  for (std::uint32_t v = 0; v < num_nodes(); ++v) {
+    const Node& n = nodes_[v];
+    s += "node " + describe(v) + ": d_F " +
+         (df_[v] == kInfinity ? std::string("inf") : std::to_string(df_[v]));
+    if (vf_[v]) s += ", in V_F";
+    if (n.state != kAux) {
+      if (std::find(nba.initial.begin(), nba.initial.end(), n.state) != nba.initial.end()) {
+        s += ", initial state";
+      }
+      if (nba.accepting[n.state]) s += ", final state";
+    }
+    s += "\n";
+  }
+  for (std::uint32_t v = 0; v < num_nodes(); ++v) {
+    for (const Edge& e : out_[v]) {
+      std::string letters;
+      for (std::size_t h = e.letters.next(0); h < e.letters.universe(); h = e.letters.next(h + 1)) {
+        letters += (letters.empty() ? "" : ", ") + nba.alphabet.letter_name(h);
+      }
+      s += "edge " + describe(v) + " -> " + describe(e.dst) + ": {" + letters + "}";
+      if (e.accepting) s += e.in_cycle ? " accepting" : " accepting (in no cycle)";
+      s += "\n";
+    }
   }
   return s;
 }

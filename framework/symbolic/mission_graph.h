@@ -2,14 +2,21 @@
 // (the b_inf of Eq. 2 is built into the alphabet), the auxiliary initial state q_aux with
 // the initial symbol π0, the set D, single-symbol multi-hop edges (Eq. 4) with every symbol
 // that drives them (Eq. 9), accepting edges (Def. 3), V_F (Eq. 6) and d_F (Eq. 7) by BFS.
+// Two constructions (GraphMode):
 //
-// Completeness beyond the paper (the gap: a symbol cycling through several states with no
-// self-loop is a plan the paper's G cannot express): the automaton is self-loopized first
-// (Michaud & Duret-Lutz, SPIN 2015, construction `sl`): a node is an automaton state
-// together with the letter held when entering it, and holding that letter is always
-// possible. For stutter-invariant (X-free) formulas this keeps the language. Nodes whose
-// held letter already has a real self-loop are merged ("stable"), so G stays as small as
-// the automaton in the common case. See mission_graph.cpp.
+// kPaper: Appendix I-B exactly. Nodes are q_aux and the automaton states of D (Eq. 3): states
+// with a self-loop that a run of single repeated symbols reaches. An edge q -> q' under σ is a
+// run q, q^1, ..., q^K = q' of Eq. (4) reading σ at every step, its intermediate states without
+// a σ self-loop (conditions i and ii), q' with one (iii). The edge is accepting (Def. 3) when a
+// state it enters is final. q_aux's edges read π0 (b^{q_aux, q0} = π0, then π0 repeated).
+//
+// kSelfLoop (the default; completeness beyond the paper, the gap being that a symbol cycling
+// through several states with no self-loop is a plan the paper's G cannot express): the
+// automaton is self-loopized first (Michaud & Duret-Lutz, SPIN 2015, construction `sl`): a
+// node is an automaton state together with the letter held when entering it, and holding that
+// letter is always possible. For stutter-invariant (X-free) formulas this keeps the language.
+// Nodes whose held letter already has a real self-loop are merged ("stable"), so G stays as
+// small as the automaton in the common case. See mission_graph.cpp and docs/symbolic.md.
 #pragma once
 
 #include <cstdint>
@@ -21,6 +28,14 @@
 
 namespace rearm::symbolic {
 
+enum class GraphMode {
+  kSelfLoop,  // self-loopized automaton (complete; the experiments' mode)
+  kPaper,     // Appendix I-B exactly
+};
+const char* to_string(GraphMode m);
+// "paper" or "selfloop"; throws rearm::Error naming the text otherwise.
+GraphMode parse_graph_mode(const std::string& text);
+
 class MissionGraph {
  public:
   static constexpr std::uint32_t kInfinity = std::numeric_limits<std::uint32_t>::max();
@@ -28,12 +43,13 @@ class MissionGraph {
   struct Node {
     std::uint32_t state;        // automaton state (kAux for q_aux)
     std::int32_t split_letter;  // letter held with only an added self-loop, or -1 (stable)
-    bool started;               // some action has been performed (the held letter is not ε)
+    bool started;  // some action has been performed (the held letter is not ε); kSelfLoop only
   };
   struct Edge {
     std::uint32_t dst;
     ltl::LetterSet letters;  // every symbol driving the edge (Eq. 9)
-    bool accepting;          // enters a final state by a real transition (Def. 3)
+    bool accepting;          // enters a final state by a real transition (Def. 3); a (src, dst)
+                             // pair has one edge per value (the symbols' runs may differ)
     bool in_cycle;           // dst can reach the source again (same SCC)
   };
   static constexpr std::uint32_t kAux = std::numeric_limits<std::uint32_t>::max();
@@ -50,9 +66,11 @@ class MissionGraph {
   };
   // `excluded`: letters known to be infeasible; their edges are left out (G and d_F
   // recomputed without infeasible actions). G keeps a pointer to `nba`.
-  MissionGraph(const ltl::ActionNba& nba, Start start, const ltl::LetterSet& excluded);
+  MissionGraph(const ltl::ActionNba& nba, Start start, const ltl::LetterSet& excluded,
+               GraphMode mode = GraphMode::kSelfLoop);
 
   const ltl::ActionNba& automaton() const { return *nba_; }
+  GraphMode mode() const { return mode_; }
   std::uint32_t num_nodes() const { return static_cast<std::uint32_t>(nodes_.size()); }
   // The start node (q_aux, or the current situation of a rebuilt G).
   std::uint32_t start() const { return 0; }
@@ -65,9 +83,20 @@ class MissionGraph {
   // d_F (Eq. 7): hops to V_F, kInfinity when unreachable.
   std::uint32_t d_f(std::uint32_t v) const { return df_[v]; }
   std::string describe(std::uint32_t v) const;
+  // G as text: one line per node (name, d_F, V_F membership, initial/final automaton state),
+  // then one per edge (source -> target, the symbols driving it, accepting or not).
+  std::string to_text() const;
 
  private:
+  void build_selfloop(const Start& start, const ltl::LetterSet& excluded);
+  void build_paper(const Start& start, const ltl::LetterSet& excluded);
+  std::uint32_t paper_node(std::uint32_t state, std::vector<std::uint32_t>& id_of_state);
+  void add_edge(std::uint32_t src, std::uint32_t dst, const ltl::LetterSet& letters,
+                bool accepting);
+  void distances();
+
   const ltl::ActionNba* nba_;
+  GraphMode mode_;
   std::vector<Node> nodes_;
   std::vector<std::vector<Edge>> out_;
   std::vector<bool> vf_;

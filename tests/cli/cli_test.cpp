@@ -122,6 +122,23 @@ TEST(CliTest, PlanPrintsThePaperExamplesActionLassos) {
   EXPECT_EQ(run("plan --help").code, 0);
 }
 
+// Fig. 7 (Appendix I-B): the paper's G of []<>move(l1) && []<>move(l2) has d_F 2, 1, 0 along
+// q_aux, the node before V_F and V_F's one node.
+TEST(CliTest, PlanShowsThePapersGraph) {
+  const Result r = run("plan --graph paper --show-graph --formula '[]<>move(l1) && []<>move(l2)'");
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_TRUE(contains(r.out, "G (paper construction, Appendix I-B): 3 nodes")) << r.out;
+  EXPECT_TRUE(contains(r.out, "node q_aux: d_F 2\n")) << r.out;
+  EXPECT_TRUE(contains(r.out, ": d_F 1\n")) << r.out;
+  EXPECT_TRUE(contains(r.out, ": d_F 0, in V_F\n")) << r.out;
+  EXPECT_TRUE(contains(r.out, "cycle: move(l1) move(l2)\n") ||
+              contains(r.out, "cycle: move(l2) move(l1)\n"))
+      << r.out;
+  const Result bad = run("plan --graph spot --formula '<>move(l1)'");
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_TRUE(contains(bad.out, "unknown graph construction 'spot'")) << bad.out;
+}
+
 TEST(CliTest, PlanWithInfeasibleActions) {
   EXPECT_EQ(run("plan --formula '<>(move(l1) || move(l2))' --infeasible 'move(l1)'").out,
             "prefix: move(l2)\ncycle: idle\n");
@@ -138,6 +155,14 @@ TEST(CliTest, PlanRejectsBadInputWithAReason) {
   const Result neg = run("plan --formula '!<>move(l1)'");
   EXPECT_EQ(neg.code, 2);
   EXPECT_TRUE(contains(neg.out, "negation")) << neg.out;
+  // The paper's fragment has no negation (Section II-B, footnote 4); --allow-negation plans
+  // negated predicates symbolically.
+  const Result forbid = run("plan --formula '<>move(l1) && [](!grasp(M2))'");
+  EXPECT_EQ(forbid.code, 2);
+  EXPECT_TRUE(contains(forbid.out, "negation is not allowed")) << forbid.out;
+  const Result allowed = run("plan --formula '<>move(l1) && [](!grasp(M2))' --allow-negation");
+  EXPECT_EQ(allowed.code, 0) << allowed.out;
+  EXPECT_EQ(allowed.out, "prefix: move(l1)\ncycle: idle\n");
   const Result name = run("plan --formula '<>move(l9)' --regions l1,l2");
   EXPECT_EQ(name.code, 2);
   EXPECT_TRUE(contains(name.out, "unknown region 'l9'")) << name.out;

@@ -88,6 +88,55 @@ TEST(RunScenario, UnknownNamesInTheTaskAreRejected) {
   EXPECT_THROW(check_task(s), scenario::ScenarioError);
 }
 
+// π0 (Appendix I-B) from the scenario: `[](move(l1) || move(l2))` constrains the first instant,
+// so it holds only when the robot starts in l1 and says so; then it must reach l2 (and it
+// stays in l1 or l2 ever after: the word the controller performs). Truth: the formula's
+// semantics on the performed word (move(l1) held, then move(l2)), and the plant's end pose
+// located in l2.
+TEST(RunScenario, InitialPredicateIsTheFirstSymbol) {
+  scenario::Scenario s = load("patrol");
+  s.robot.start = geometry::Point(1.8, 5.0);  // inside l1
+  s.task = "[](move(l1) || move(l2)) && <>move(l2)";
+  s.simulation.max_actions = 0;
+  // Without π0 the first instant holds the empty symbol, which violates the formula.
+  {
+    const RunRecord r = run_scenario(s, RunOptions{});
+    EXPECT_EQ(r.result.status, executive::TaskStatus::kInfeasible) << r.result.reason;
+    EXPECT_TRUE(succeeded(r).empty());
+  }
+  s.initial_predicate = "move(l1)";
+  const RunRecord r = run_scenario(s, RunOptions{});
+  ASSERT_EQ(r.result.status, executive::TaskStatus::kCompleted) << r.result.reason;
+  EXPECT_EQ(succeeded(r), std::vector<std::string>{"move(l2)"});
+  EXPECT_EQ(r.result.collisions, 0);
+  const geometry::Polygon* l2 = nullptr;
+  for (const auto& g : s.regions) {
+    if (g.name == "l2") l2 = &g.polygon;
+  }
+  ASSERT_NE(l2, nullptr);
+  EXPECT_TRUE(geometry::contains(*l2, r.result.path.back().x));
+  // π0 must hold of the scene: the key is named when it does not.
+  auto error_of = [&](const std::string& pi0) {
+    scenario::Scenario t = s;
+    t.objects.push_back({"M1", geometry::Disk{geometry::Point(6, 5), 0.25}});  // in no region
+    t.initial_predicate = pi0;
+    try {
+      check_task(t);
+    } catch (const scenario::ScenarioError& e) {
+      EXPECT_EQ(e.key(), "initial_predicate") << pi0;
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_EQ(error_of("move(l1)"), "accepted");
+  EXPECT_NE(error_of("move(l2)").find("not inside region l2"), std::string::npos);
+  EXPECT_NE(error_of("move(l9)").find("unknown region 'l9'"), std::string::npos);
+  EXPECT_NE(error_of("grasp(M1)").find("gripper open"), std::string::npos);
+  EXPECT_NE(error_of("release(M1,l1)").find("M1 does not start inside region l1"),
+            std::string::npos);
+  EXPECT_NE(error_of("stand(l1)").find("stand(l1)"), std::string::npos);
+}
+
 TEST(RunScenario, TaskSpecCarriesTheScenariosParameters) {
   scenario::Scenario s = load("fig3");
   s.controller.p = 14;

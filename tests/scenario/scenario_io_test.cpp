@@ -129,6 +129,7 @@ void expect_same(const Scenario& a, const Scenario& b) {
   expect_same_named(a.familiar, b.familiar, "familiar");
   expect_same_named(a.unknown, b.unknown, "unknown");
   EXPECT_EQ(a.task, b.task);
+  EXPECT_EQ(a.initial_predicate, b.initial_predicate);
   EXPECT_EQ(a.controller.p, b.controller.p);
   EXPECT_EQ(a.controller.epsilon, b.controller.epsilon);
   EXPECT_EQ(a.controller.mu1, b.controller.mu1);
@@ -1006,6 +1007,7 @@ TEST(ScenarioRoundTrip, RandomScenarios) {
     SCOPED_TRACE("seed " + std::to_string(seed));
     Scenario s = random_scenario(seed);
     s.source = "random.yaml";
+    if (seed % 2 == 0) s.initial_predicate = "move(\"r\" " + std::to_string(seed) + ")";
     ASSERT_NO_THROW(validate(s));
     const std::string text = to_yaml(s);
     Scenario back;

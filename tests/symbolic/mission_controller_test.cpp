@@ -144,10 +144,30 @@ TEST(MissionController, ReportsMustMatchThePendingAction) {
   EXPECT_THROW(mc.report_infeasible(Action::parse("move(l2)")), Error);
 }
 
+// π0 is the symbol of the first instant (Appendix I-B's q_aux edge): [](move(l1) || move(l2))
+// holds on the word that holds move(l1) from the start and never does anything else, and on
+// no word that starts with the empty symbol.
+TEST(MissionController, InitialPredicateIsTheFirstSymbol) {
+  const char* f = "[](move(l1) || move(l2))";
+  MissionController without(ltl::parse(f));
+  EXPECT_FALSE(without.next_action());
+  EXPECT_EQ(without.status(), MissionStatus::Infeasible);
+  MissionOptions o;
+  o.initial = Action::parse("move(l1)");
+  MissionController with(ltl::parse(f), o);
+  EXPECT_FALSE(with.next_action());
+  EXPECT_EQ(with.status(), MissionStatus::Accepting);
+  const Outcome then_l2 = execute(std::string(f) + " && <>move(l2)", 5, {}, o);
+  EXPECT_EQ(then_l2.actions, std::vector<std::string>{"move(l2)"});
+  EXPECT_EQ(then_l2.status, MissionStatus::Accepting);
+}
+
 TEST(MissionController, RejectsFormulasOutsideTheFragment) {
-  auto message = [](const std::string& f, const Vocabulary& v = {}) {
+  auto message = [](const std::string& f, const Vocabulary& v = {}, bool allow_negation = false) {
     try {
-      MissionController mc(ltl::parse(f), MissionOptions{std::nullopt, v, {}});
+      MissionOptions o{std::nullopt, v, {}};
+      o.allow_negation = allow_negation;
+      MissionController mc(ltl::parse(f), o);
     } catch (const Error& e) {
       return std::string(e.what());
     }
@@ -155,16 +175,27 @@ TEST(MissionController, RejectsFormulasOutsideTheFragment) {
   };
   EXPECT_NE(message("X move(l1)").find("X (next)"), std::string::npos);
   EXPECT_NE(message("<>(move(l1) && X grasp(M1))").find("X (next)"), std::string::npos);
-  EXPECT_NE(message("!<>move(l1)").find("negation over the temporal"), std::string::npos);
-  EXPECT_NE(message("<>move(l1) -> <>move(l2)").find("negation"), std::string::npos);
-  EXPECT_NE(message("(<>move(l1)) <-> move(l2)").find("negation"), std::string::npos);
   EXPECT_NE(message("<>p1").find("'p1' is not an action predicate"), std::string::npos);
   const Vocabulary v{{"M1"}, {"l1", "l2"}};
   EXPECT_NE(message("<>move(l7)", v).find("unknown region 'l7'"), std::string::npos);
   EXPECT_NE(message("<>release(M9,l1)", v).find("unknown object 'M9'"), std::string::npos);
-  // Negation over predicates only is accepted (and X-free formulas are).
-  EXPECT_EQ(message("<>(move(l1) && !grasp(M1))"), "accepted");
-  EXPECT_EQ(message("!move(l2) U move(l1)", v), "accepted");
+  // The paper's fragment has no negation (Section II-B, footnote 4): every form is refused,
+  // the implicit ones of ->, <-> and xor too, naming the paper's reason.
+  for (const char* f :
+       {"<>move(l1) && [](!grasp(M2))", "!move(l2) U move(l1)", "[](grasp(M1) -> <>move(l1))",
+        "<>(move(l1) <-> move(l2))", "<>(move(l1) xor move(l2))", "!<>move(l1)"}) {
+    const std::string m = message(f);
+    EXPECT_NE(m.find("negation is not allowed"), std::string::npos) << f << ": " << m;
+    EXPECT_NE(m.find("footnote 4"), std::string::npos) << f << ": " << m;
+  }
+  EXPECT_EQ(message("[]<>move(l1) && []<>(move(l2) || grasp(M1))"), "accepted");
+  // allow_negation (symbolic planning only): negation over predicates is planned; over a
+  // temporal subformula it is still refused.
+  EXPECT_EQ(message("<>(move(l1) && !grasp(M1))", {}, true), "accepted");
+  EXPECT_EQ(message("!move(l2) U move(l1)", v, true), "accepted");
+  EXPECT_NE(message("!<>move(l1)", {}, true).find("negation over the temporal"), std::string::npos);
+  EXPECT_NE(message("<>move(l1) -> <>move(l2)", {}, true).find("negation"), std::string::npos);
+  EXPECT_NE(message("(<>move(l1)) <-> move(l2)", {}, true).find("negation"), std::string::npos);
 }
 
 TEST(MissionGraph, SelfLoopizationKeepsASymbolCyclingWithoutSelfLoops) {
