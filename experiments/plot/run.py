@@ -4,8 +4,9 @@
 usage: run.py TRAJECTORY.json OUT_DIR [--no-animation] [--frames N]
 
 Writes OUT_DIR/run.png: the workspace, familiar obstacles (dark grey, black once localized),
-unknown obstacles (light grey), regions of interest, the objects at start (dashed) and end
-(filled), and the robot's and objects' paths. Unless --no-animation, also OUT_DIR/run.gif: the
+unknown obstacles (light grey), regions of interest, the objects at start (dashed, named in
+grey) and end (filled, named in white), and the robot's and objects' paths, with a legend and
+the formula wrapped under the title. Unless --no-animation, also OUT_DIR/run.gif: the
 same scene over time (at most N frames, default 200), familiar obstacles turning black when
 localized, with the current action (Fix-mode actions marked *).
 """
@@ -13,13 +14,15 @@ import json
 import math
 import os
 import sys
+import textwrap
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.animation import FuncAnimation, PillowWriter  # noqa: E402
-from matplotlib.patches import Circle, Polygon  # noqa: E402
+from matplotlib.lines import Line2D  # noqa: E402
+from matplotlib.patches import Circle, Patch, Polygon  # noqa: E402
 
 DARK_GREY = "#555555"
 LIGHT_GREY = "#c8c8c8"
@@ -61,8 +64,33 @@ def draw_static(ax, t, localized):
     return patches
 
 
+def title(t, status=True, width=95):
+    """The scene's name (and outcome) over its formula, wrapped at spaces to `width`."""
+    head = f"{t['scenario']}: {t['status']}" if status else t["scenario"]
+    return head + "\n" + "\n".join(textwrap.wrap(t["task"], width=width))
+
+
+def legend(ax, t):
+    items = [Line2D([], [], color=ROBOT, linewidth=1.2, label="robot path"),
+             Line2D([], [], color=ROBOT, marker="o", linestyle="none", markersize=4,
+                    label="robot start"),
+             Line2D([], [], color="grey", linewidth=1.0, linestyle="--", label="object paths"),
+             Line2D([], [], color="grey", marker="o", markerfacecolor="none", linestyle="none",
+                    markersize=9, label="object start"),
+             Line2D([], [], color="grey", marker="o", linestyle="none", markersize=9,
+                    label="object end")]
+    if t["familiar"]:
+        items.append(Patch(facecolor="black", label="familiar obstacle"))
+    if t["unknown"]:
+        items.append(Patch(facecolor=LIGHT_GREY, edgecolor="grey", label="unknown obstacle"))
+    if t["regions"]:
+        items.append(Patch(facecolor=REGION_COLORS[0], alpha=0.55, label="region of interest"))
+    ax.legend(handles=items, loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8,
+              frameon=False)
+
+
 def figure(t, out_dir):
-    fig, ax = plt.subplots(figsize=(8, 8 * aspect(t)))
+    fig, ax = plt.subplots(figsize=(10, 8 * aspect(t)))
     draw_static(ax, t, lambda f: f["localized_at"] >= 0)
     robot = t["robot"]
     ax.plot([p[0] for p in robot], [p[1] for p in robot], color=ROBOT, linewidth=1.2,
@@ -72,6 +100,9 @@ def figure(t, out_dir):
         ax.plot([p[0] for p in path], [p[1] for p in path], color=c, linewidth=1.0,
                 linestyle="--")
         ax.add_patch(Circle(path[0], o["radius"], fill=False, edgecolor=c, linestyle="--"))
+        if math.dist(path[0], path[-1]) > 2 * o["radius"]:
+            ax.text(path[0][0], path[0][1] - 1.6 * o["radius"], o["name"], ha="center",
+                    va="top", fontsize=7, color="grey")
         ax.add_patch(Circle(path[-1], o["radius"], facecolor=c, edgecolor=c, alpha=0.85))
         ax.text(path[-1][0], path[-1][1], o["name"], ha="center", va="center", fontsize=8,
                 color="white", weight="bold")
@@ -80,7 +111,8 @@ def figure(t, out_dir):
     ax.add_patch(Circle((x, y), r, facecolor=ROBOT, edgecolor="black", alpha=0.9))
     ax.plot([x, x + r * math.cos(psi)], [y, y + r * math.sin(psi)], color="white")
     ax.plot(robot[0][0], robot[0][1], marker="o", color=ROBOT, markersize=4)
-    ax.set_title(f"{t['scenario']}: {t['status']}\n{t['task']}", fontsize=9)
+    ax.set_title(title(t), fontsize=9)
+    legend(ax, t)
     fig.tight_layout()
     path = os.path.join(out_dir, "run.png")
     fig.savefig(path, dpi=150)
@@ -124,7 +156,7 @@ def animation(t, out_dir, max_frames):
         objs.append(circle)
     label = ax.text(0.01, 0.99, "", transform=ax.transAxes, ha="left", va="top", fontsize=8,
                     bbox=dict(facecolor="white", alpha=0.7, edgecolor="none"))
-    ax.set_title(f"{t['scenario']}: {t['task']}", fontsize=8)
+    ax.set_title(title(t, status=False, width=80), fontsize=8)
 
     def update(k):
         time = k * dt

@@ -47,6 +47,19 @@ void check_tick(const Command& cmd, const Twist& previous, double clearance, con
   }
 }
 
+// TaskOptions::clearance_by_kind: the robot's disk and the held object's at this tick.
+void lower_by_kind(const perception::World& world, const Plant& plant, const Pose& pose,
+                   double robot_radius, TaskResult& res) {
+  std::vector<Point> centers(world.movable.size());
+  for (std::size_t i = 0; i < centers.size(); ++i) centers[i] = plant.object_center(i);
+  const std::optional<std::size_t> held = plant.held();
+  res.clearance_by_kind.lower(world, centers, pose.x, robot_radius, held);
+  if (held) {
+    res.clearance_by_kind.lower(world, centers, centers[*held], world.movable[*held].disk.radius,
+                                held);
+  }
+}
+
 }  // namespace
 
 TaskResult run_task(const TaskSpec& spec, Plant& plant, const TaskOptions& o) {
@@ -84,6 +97,7 @@ TaskResult run_task(const TaskSpec& spec, Plant& plant, const TaskOptions& o) {
     const Pose pose = plant.pose();
     const double clearance = plant.clearance();
     res.min_clearance = std::min(res.min_clearance, clearance);
+    if (o.clearance_by_kind) lower_by_kind(world, plant, pose, spec.executive.robot_radius, res);
     if (o.record_path) {
       res.path.push_back(pose);
       for (std::size_t i = 0; i < n; ++i) res.object_paths[i].push_back(plant.object_center(i));

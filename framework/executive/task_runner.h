@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "executive/clearance_by_kind.h"
 #include "executive/executive.h"
 #include "executive/plant.h"
 #include "executive/region.h"
@@ -43,6 +44,9 @@ struct TaskOptions {
   // the gripper opening only after a tick at rest (v = ω = 0: a pair let go while moving slides
   // on). A violation throws rearm::InvariantViolation naming the time, the action and the breach.
   bool check_invariants = false;
+  // Track TaskResult::clearance_by_kind on every tick (a point-to-polygon distance per obstacle
+  // per tick; off in sweeps).
+  bool clearance_by_kind = false;
 };
 
 // m: the overlap the checked mode tolerates, Box2D's linear slop (b2_linearSlop, the
@@ -58,7 +62,9 @@ struct TaskResult {
   int collisions = 0;
   std::vector<std::string> collision_events;  // Plant::collision_events
   double min_clearance = 0;                   // m, ground truth over every step
-  double sim_time = 0;                        // s
+  // The same per kind of thing (TaskOptions::clearance_by_kind; +infinity when not tracked).
+  ClearanceByKind clearance_by_kind;
+  double sim_time = 0;  // s
   int steps = 0;
   double robot_path_length = 0;   // m
   double object_path_length = 0;  // m, summed over objects

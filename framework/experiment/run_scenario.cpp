@@ -1,6 +1,7 @@
 #include "experiment/run_scenario.h"
 
 #include <cmath>
+#include <utility>
 
 #include "core/error.h"
 #include "executive/kinematic_plant.h"
@@ -37,6 +38,7 @@ RunRecord run_scenario(const scenario::Scenario& s, const RunOptions& o) {
   topt.dt = s.simulation.dt;
   topt.max_time = s.simulation.time_budget;
   topt.record_path = o.record;
+  topt.clearance_by_kind = o.record;
   topt.check_invariants = o.checked;
   RunRecord r;
   r.scenario = s.name;
@@ -85,6 +87,21 @@ std::string metrics_json(const scenario::Scenario& s, const RunRecord& r) {
   for (const std::string& e : t.collision_events) j.value(e);
   j.end_array();
   j.key("min_clearance").value(t.min_clearance);
+  // Per kind (null when the scene has none of that kind): the robot's and the held object's.
+  j.key("min_clearance_by_kind").begin_object();
+  const executive::ClearanceByKind& c = t.clearance_by_kind;
+  for (const auto& [name, value] : {std::pair<const char*, double>{"familiar", c.familiar},
+                                    {"unknown", c.unknown},
+                                    {"objects", c.objects},
+                                    {"boundary", c.boundary}}) {
+    j.key(name);
+    if (std::isfinite(value)) {
+      j.value(value);
+    } else {
+      j.null();
+    }
+  }
+  j.end_object();
   j.key("sim_time_s").value(t.sim_time);
   j.key("steps").value(t.steps);
   j.key("dt_s").value(s.simulation.dt);

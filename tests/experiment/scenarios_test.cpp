@@ -4,6 +4,7 @@
 // (ground truth from the simulator, exact point location).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <iostream>
 #include <map>
 #include <string>
@@ -58,6 +59,14 @@ TEST_P(Scenarios, CompleteSafelyWithTheFormulasActions) {
   std::vector<std::string> ltl;
   for (const auto& a : t.actions) {
     if (!a.fix && a.outcome == executive::ActionOutcome::kSucceeded) ltl.push_back(a.action);
+  }
+  // The clearance per kind of thing: their least is the plant's clearance (its own geometry);
+  // fig5 works through clutter (within 0.5 m of a familiar and of an unknown obstacle).
+  const executive::ClearanceByKind& c = t.clearance_by_kind;
+  EXPECT_NEAR(std::min({c.familiar, c.unknown, c.objects, c.boundary}), t.min_clearance, 1e-9);
+  if (e.name == "fig5") {
+    EXPECT_LE(c.familiar, 0.5);
+    EXPECT_LE(c.unknown, 0.5);
   }
   if (e.name == "patrol") {
     // []<>move(l1) && []<>move(l2) && []<>move(l3), 9 actions: every region visited 3 times.

@@ -17,6 +17,7 @@
 #include "core/rng.h"
 #include "geometry/convex.h"
 #include "support/geometry_oracle.h"
+#include "support/task_scenes.h"
 
 namespace rearm::geometry {
 namespace {
@@ -24,10 +25,6 @@ namespace {
 using test_support::ray_cast_inside;
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-
-Polygon box(double x0, double y0, double x1, double y1) {
-  return Polygon{{{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}};
-}
 
 // What a sensor of range 3 m at x sees of a convex obstacle: the obstacle clipped by the
 // circumscribed 32-gon (the footprint of perception/sensor.h, built here by hand).
@@ -64,7 +61,7 @@ Sampled sample_difference(const Polygon& a, const Polygon& b, const Point& x, do
 // A wall seen from two robot positions 0.5 m apart along it: the fragments share the wall's
 // long edges (each clipped on its own by its footprint), and the new part lies about R away.
 TEST(ConvexDifference, FragmentsOfOneWallCountOnlyTheirNewPart) {
-  const Polygon wall = box(-10, 0.5, 10, 1.0);
+  const Polygon wall = test_support::rect(-10, 0.5, 10, 1.0);
   const Point then(0, 0), now(0.5, 0);
   const Polygon a = seen_from(wall, then);
   const Polygon b = seen_from(wall, now);
@@ -108,12 +105,12 @@ TEST(ConvexDifference, ConvexDifferenceMatchesSampling) {
 }
 
 TEST(ConvexDifference, EmptyOldFragmentIsTheWholeNewOne) {
-  const Polygon b = box(2, -1, 3, 1);
+  const Polygon b = test_support::rect(2, -1, 3, 1);
   EXPECT_DOUBLE_EQ(convex_difference_distance(Polygon{}, b, Point(0, 0)), 2.0);
   EXPECT_EQ(convex_difference_distance(b, b, Point(0, 0)), kInf);
   EXPECT_EQ(convex_difference_distance(b, Polygon{}, Point(0, 0)), kInf);
   // B inside A: nothing new.
-  EXPECT_EQ(convex_difference_distance(box(0, -3, 5, 3), b, Point(-1, 0)), kInf);
+  EXPECT_EQ(convex_difference_distance(test_support::rect(0, -3, 5, 3), b, Point(-1, 0)), kInf);
 }
 
 }  // namespace
