@@ -21,7 +21,7 @@ namespace fs = std::filesystem;
 constexpr const char* kUsage =
     "usage: rearm run SCENARIO.yaml [--out DIR] [--seed N] [--plant box2d|kinematic]\n"
     "                 [--stride N] [--variant paper|robust] [--checked] [--no-plot]\n"
-    "                 [--no-animation]\n\n"
+    "                 [--no-animation] [--spaces]\n\n"
     "Runs the scenario's LTL task: mission controller, interface layer (LTL and Fix modes),\n"
     "topology check and reactive controller, in a Box2D world (or on the kinematic plant).\n"
     "Writes DIR/metrics.json (status, collisions, times, actions, path lengths, ...),\n"
@@ -33,6 +33,9 @@ constexpr const char* kUsage =
     "  --checked       check the closed loop's invariants on every tick (finite commands, no\n"
     "                  overlap beyond Box2D's slop, det Dh > 0, the law's model point in the\n"
     "                  model freespace); a violation is an internal error (exit 1) naming it\n"
+    "  --spaces        also record the mapped and model spaces of every diffeomorphism build\n"
+    "                  and the law's model point (trajectory.json) and draw DIR/spaces.gif:\n"
+    "                  the semantic, mapped and model spaces side by side, as the paper's video\n"
     "  --variant V     override the scenario's controller variant: paper (the paper's\n"
     "                  choices only) or robust (every extension; experiments/sweeps/README.md)\n"
     "Exit: 0 when the task completed, 1 when it ended infeasible, stuck or by timeout,\n"
@@ -81,6 +84,8 @@ RunArgs parse_run_args(const std::vector<std::string>& args) {
       r.plot = false;
     } else if (a == "--no-animation") {
       r.animation = false;
+    } else if (a == "--spaces") {
+      r.options.spaces = true;
     } else if (a.rfind("--", 0) == 0) {
       throw Error("unknown option " + a + "\n" + kUsage);
     } else if (r.path.empty()) {

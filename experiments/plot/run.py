@@ -8,8 +8,13 @@ unknown obstacles (light grey), regions of interest, the objects at start (dashe
 grey) and end (filled, named in white), and the robot's and objects' paths, with a legend and
 the formula wrapped under the title. Unless --no-animation, also OUT_DIR/run.gif: the
 same scene over time (at most N frames, default 200), familiar obstacles turning black when
-localized, with the current action (Fix-mode actions marked *).
+localized, with the current action (Fix-mode actions marked *); and, when the trajectory holds
+the spaces (`rearm run --spaces`), OUT_DIR/spaces.gif: the semantic, mapped and model spaces
+side by side as in the paper's video (mapped: the freespace F_k of the robot's, or the pair's,
+centre, light, inside the convex enclosure F_e; model: F_e with the model disks of the familiar
+clusters and objects and the unknown convex obstacles, and the law's model point h(x)).
 """
+import bisect
 import json
 import math
 import os
@@ -181,6 +186,102 @@ def animation(t, out_dir, max_frames):
     print(f"wrote {path}")
 
 
+def polygon_patch(points, **kw):
+    return Polygon(points, closed=True, **kw)
+
+
+def draw_mapped(ax, snap, lim):
+    ax.clear()
+    ax.add_patch(polygon_patch(snap["enclosing"], fill=False, edgecolor="black", linewidth=1.0))
+    fs = snap["freespace"]
+    ax.add_patch(polygon_patch(fs["outer"], facecolor="#e8f1fb", edgecolor=ROBOT, linewidth=0.8))
+    for h in fs["holes"]:
+        ax.add_patch(polygon_patch(h, facecolor=DARK_GREY, edgecolor=DARK_GREY))
+    ax.set_xlim(*lim[0])
+    ax.set_ylim(*lim[1])
+    ax.set_aspect("equal")
+    ax.set_axis_off()
+    ax.set_title("mapped space (F_k in F_e)", fontsize=8)
+
+
+def draw_model(ax, snap, lim):
+    ax.clear()
+    m = snap["model"]
+    ax.add_patch(polygon_patch(m["boundary"], facecolor="#e8f1fb", edgecolor="black",
+                               linewidth=1.0))
+    for x, y, r in m["disks"]:
+        ax.add_patch(Circle((x, y), r, facecolor=DARK_GREY, edgecolor=DARK_GREY))
+    for c in m["convex"]:
+        ax.add_patch(polygon_patch(c, facecolor=LIGHT_GREY, edgecolor="grey"))
+    ax.set_xlim(*lim[0])
+    ax.set_ylim(*lim[1])
+    ax.set_aspect("equal")
+    ax.set_axis_off()
+    ax.set_title("model space (disks and convex obstacles)", fontsize=8)
+
+
+def spaces_animation(t, out_dir, max_frames):
+    """Three panels: the semantic space (as run.gif), the mapped space of the build in use and
+    the model space with the law's model point."""
+    robot, spaces, model_path = t["robot"], t["spaces"], t["model_path"]
+    n = len(robot)
+    step = max(1, math.ceil(n / max_frames))
+    frames = list(range(0, n, step))
+    if frames[-1] != n - 1:
+        frames.append(n - 1)
+    dt = t["dt"]
+    times = [s["t"] for s in spaces]
+    xs = [p[0] for p in t["workspace"]]
+    ys = [p[1] for p in t["workspace"]]
+    lim = ((min(xs) - 0.2, max(xs) + 0.2), (min(ys) - 0.2, max(ys) + 0.2))
+    fig, axes = plt.subplots(1, 3, figsize=(15, 5.6 * aspect(t) + 0.8))
+    patches = draw_static(axes[0], t, lambda f: False)
+    axes[0].set_title("semantic space", fontsize=8)
+    r = t["robot_radius"]
+    body = Circle(robot[0][:2], r, facecolor=ROBOT, edgecolor="black")
+    axes[0].add_patch(body)
+    trail, = axes[0].plot([], [], color=ROBOT, linewidth=1.0)
+    objs = []
+    for i, o in enumerate(t["objects"]):
+        c = OBJECT_COLORS[i % len(OBJECT_COLORS)]
+        circle = Circle(t["object_paths"][i][0], o["radius"], facecolor=c, edgecolor=c)
+        axes[0].add_patch(circle)
+        objs.append(circle)
+    fig.suptitle(title(t, status=False, width=150), fontsize=8)
+    label = fig.text(0.01, 0.01, "", fontsize=8)
+    drawn = {"snap": None}
+
+    def update(k):
+        time = k * dt
+        for f, p in patches:
+            color = "black" if 0 <= f["localized_at"] <= time else DARK_GREY
+            p.set_facecolor(color)
+            p.set_edgecolor(color)
+        trail.set_data([p[0] for p in robot[: k + 1]], [p[1] for p in robot[: k + 1]])
+        body.center = tuple(robot[k][:2])
+        for circle, path in zip(objs, t["object_paths"]):
+            circle.center = path[min(k, len(path) - 1)]
+        i = bisect.bisect_right(times, time + 1e-9) - 1
+        if i >= 0:
+            if drawn["snap"] != i:
+                draw_mapped(axes[1], spaces[i], lim)
+                draw_model(axes[2], spaces[i], lim)
+                drawn["snap"] = i
+            axes[1].plot(robot[k][0], robot[k][1], "o", color=ROBOT, markersize=3)
+            y = model_path[k] if k < len(model_path) else None
+            if y is not None:
+                axes[2].plot(y[0], y[1], "o", color=ROBOT, markersize=3)
+        label.set_text(f"t = {time:6.1f} s  {action_at(t, time)}")
+        return []
+
+    anim = FuncAnimation(fig, update, frames=frames, blit=False)
+    path = os.path.join(out_dir, "spaces.gif")
+    fig.tight_layout(rect=(0, 0.03, 1, 0.95))
+    anim.save(path, writer=PillowWriter(fps=20), dpi=80)
+    plt.close(fig)
+    print(f"wrote {path}")
+
+
 def main(argv):
     args = [a for a in argv[1:] if not a.startswith("--")]
     flags = [a for a in argv[1:] if a.startswith("--")]
@@ -199,6 +300,8 @@ def main(argv):
     figure(t, args[1])
     if "--no-animation" not in flags and t["robot"]:
         animation(t, args[1], max_frames)
+        if t.get("spaces"):
+            spaces_animation(t, args[1], max_frames)
     return 0
 
 

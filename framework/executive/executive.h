@@ -407,6 +407,9 @@ class Executive {
   int ltl_actions_completed() const { return ltl_done_; }
   int topology_checks() const { return topology_checks_; }
   int rebuilds() const { return controller_.rebuilds(); }
+  // The last step's command came from the reactive law (its model point is
+  // controller().last_law_sample().y).
+  bool law_commanded() const { return law_command_; }
   const ComputeTimes& compute_times() const { return times_; }
   // The checked mode (task_runner.h): when the last step's command was the reactive law's, why
   // the law's state breaks [7]'s invariants (det Dh(x) <= 0 at the centre, or its model point

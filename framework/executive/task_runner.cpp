@@ -47,6 +47,19 @@ void check_tick(const Command& cmd, const Twist& previous, double clearance, con
   }
 }
 
+// TaskOptions::record_spaces: a snapshot when the controller built a new diffeomorphism, and the
+// law's model point of this tick.
+void record_spaces(const Executive& exec, double t, TaskResult& res) {
+  const reactive::ReactiveController& c = exec.controller();
+  const int builds = c.rebuilds();
+  if (builds > 0 && (res.spaces.empty() || res.spaces.back().build != builds)) {
+    res.spaces.push_back(
+        SpacesSnapshot{t, builds, c.mapped().freespace, c.mapped().enclosing, c.diffeo().model()});
+  }
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  res.model_path.push_back(exec.law_commanded() ? c.last_law_sample().y : Point(nan, nan));
+}
+
 // TaskOptions::clearance_by_kind: the robot's disk and the held object's at this tick.
 void lower_by_kind(const perception::World& world, const Plant& plant, const Pose& pose,
                    double robot_radius, TaskResult& res) {
@@ -111,6 +124,7 @@ TaskResult run_task(const TaskSpec& spec, Plant& plant, const TaskOptions& o) {
     const Command cmd = exec.step(pose, t, o.dt);
     res.controller_time += seconds_since(c0);
     if (o.check_invariants) check_tick(cmd, previous, clearance, exec, t);
+    if (o.record_spaces && o.record_path) record_spaces(exec, t, res);
     previous = cmd.u;
     // The gripper acts; perception records what it holds (a failed grip holds nothing, and the
     // executive ends the grasp stuck on the next tick).

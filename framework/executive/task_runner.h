@@ -16,6 +16,7 @@
 #include "ltl/formula.h"
 #include "perception/sensor.h"
 #include "perception/world.h"
+#include "reactive/model_space.h"
 #include "symbolic/action.h"
 
 namespace rearm::executive {
@@ -47,6 +48,19 @@ struct TaskOptions {
   // Track TaskResult::clearance_by_kind on every tick (a point-to-polygon distance per obstacle
   // per tick; off in sweeps).
   bool clearance_by_kind = false;
+  // Record TaskResult::spaces and model_path (the paper's video: semantic, mapped and model
+  // spaces side by side); needs record_path.
+  bool record_spaces = false;
+};
+
+// The mapped and model spaces of one diffeomorphism build (Appendix II; [7]), from the tick
+// that first used it.
+struct SpacesSnapshot {
+  double t = 0;                 // s
+  int build = 0;                // the controller's rebuild count (ReactiveController::rebuilds)
+  geometry::Region freespace;   // F_k, the robot's (or pair's) freespace component
+  geometry::Polygon enclosing;  // F_e
+  reactive::ModelSpace model;   // F_e with model disks and unknown convex obstacles
 };
 
 // m: the overlap the checked mode tolerates, Box2D's linear slop (b2_linearSlop, the
@@ -82,6 +96,10 @@ struct TaskResult {
   int topology_checks = 0;
   std::vector<Pose> path;                        // robot poses (when recorded)
   std::vector<std::vector<Point>> object_paths;  // per object, centres (when recorded)
+  // TaskOptions::record_spaces: one snapshot per build, and per tick the law's model point
+  // h(x) (NaN on ticks whose command did not come from the law).
+  std::vector<SpacesSnapshot> spaces;
+  std::vector<Point> model_path;
 };
 
 // Runs the task on `plant` (whose objects are in the world order of spec.world.movable). The

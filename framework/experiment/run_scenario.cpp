@@ -39,6 +39,7 @@ RunRecord run_scenario(const scenario::Scenario& s, const RunOptions& o) {
   topt.max_time = s.simulation.time_budget;
   topt.record_path = o.record;
   topt.clearance_by_kind = o.record;
+  topt.record_spaces = o.record && o.spaces;
   topt.check_invariants = o.checked;
   RunRecord r;
   r.scenario = s.name;
@@ -147,6 +148,49 @@ std::string metrics_json(const scenario::Scenario& s, const RunRecord& r) {
   return j.str();
 }
 
+namespace {
+
+void region_json(JsonWriter& j, const geometry::Region& r) {
+  j.begin_object().key("outer");
+  polygon(j, r.outer);
+  j.key("holes").begin_array();
+  for (const geometry::Polygon& h : r.holes) polygon(j, h);
+  j.end_array().end_object();
+}
+
+// "model_path": the law's model point at the robot samples (null where the command was not the
+// law's); "spaces": each build's F_k, F_e and model space (boundary, disks [x, y, r], convex).
+void spaces_json(JsonWriter& j, const executive::TaskResult& t, int stride) {
+  j.key("model_path").begin_array();
+  for (std::size_t k = 0; k < t.model_path.size(); k += static_cast<std::size_t>(stride)) {
+    if (t.model_path[k].allFinite()) {
+      point(j, t.model_path[k]);
+    } else {
+      j.null();
+    }
+  }
+  j.end_array();
+  j.key("spaces").begin_array();
+  for (const executive::SpacesSnapshot& s : t.spaces) {
+    j.begin_object().key("t").value(s.t).key("freespace");
+    region_json(j, s.freespace);
+    j.key("enclosing");
+    polygon(j, s.enclosing);
+    j.key("model").begin_object().key("boundary");
+    polygon(j, s.model.boundary);
+    j.key("disks").begin_array();
+    for (const geometry::Disk& d : s.model.disks) {
+      j.begin_array().value(d.center.x()).value(d.center.y()).value(d.radius).end_array();
+    }
+    j.end_array().key("convex").begin_array();
+    for (const geometry::Polygon& c : s.model.convex) polygon(j, c);
+    j.end_array().end_object().end_object();
+  }
+  j.end_array();
+}
+
+}  // namespace
+
 std::string trajectory_json(const scenario::Scenario& s, const RunRecord& r, int stride) {
   if (stride < 1) throw Error("trajectory: stride must be >= 1");
   const executive::TaskResult& t = r.result;
@@ -199,6 +243,7 @@ std::string trajectory_json(const scenario::Scenario& s, const RunRecord& r, int
     j.end_array();
   }
   j.end_array();
+  if (!t.spaces.empty()) spaces_json(j, t, stride);
   j.key("actions").begin_array();
   for (const executive::ActionRecord& a : t.actions) {
     j.begin_object().key("action").value(a.action).key("fix_mode").value(a.fix);

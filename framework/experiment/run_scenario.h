@@ -24,6 +24,8 @@ struct RunOptions {
   bool record = true;  // keep the paths (needed for the trajectory, figure and animation)
   // Check the closed loop's invariants on every tick (executive::TaskOptions::check_invariants).
   bool checked = false;
+  // Record the mapped and model spaces for trajectory.json (TaskOptions::record_spaces).
+  bool spaces = false;
 };
 
 struct RunRecord {

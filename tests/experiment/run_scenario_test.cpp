@@ -137,6 +137,43 @@ TEST(RunScenario, InitialPredicateIsTheFirstSymbol) {
   EXPECT_NE(error_of("stand(l1)").find("stand(l1)"), std::string::npos);
 }
 
+// rearm run --spaces (the paper's video): one snapshot per diffeomorphism build, and at every
+// tick of the law a model point h(x) inside the model freespace of the build in use. Truth:
+// the point located against the model space's convex boundary (edge lines) and its disks.
+TEST(RunScenario, SpacesRecordEveryBuildAndTheModelPoint) {
+  const scenario::Scenario s = load("fig3");
+  RunOptions o;
+  o.spaces = true;
+  const RunRecord r = run_scenario(s, o);
+  const executive::TaskResult& t = r.result;
+  ASSERT_EQ(t.status, executive::TaskStatus::kCompleted) << t.reason;
+  ASSERT_EQ(static_cast<int>(t.spaces.size()), t.rebuilds);
+  ASSERT_EQ(t.model_path.size(), t.path.size());
+  std::size_t law_ticks = 0;
+  for (std::size_t k = 0; k < t.model_path.size(); ++k) {
+    const geometry::Point& y = t.model_path[k];
+    if (!y.allFinite()) continue;
+    ++law_ticks;
+    const double time = static_cast<double>(k) * s.simulation.dt;
+    std::size_t i = 0;  // the last build taken at or before this tick
+    while (i + 1 < t.spaces.size() && t.spaces[i + 1].t <= time + 1e-9) ++i;
+    const reactive::ModelSpace& m = t.spaces[i].model;
+    for (std::size_t e = 0; e < m.boundary.size(); ++e) {
+      const geometry::Point a = m.boundary.vertices[e];
+      const geometry::Point b = m.boundary.vertices[(e + 1) % m.boundary.size()];
+      const geometry::Point ab = b - a, ay = y - a;
+      EXPECT_GT(ab.x() * ay.y() - ab.y() * ay.x(), 0) << "tick " << k << " outside F_e";
+    }
+    for (const geometry::Disk& d : m.disks) {
+      EXPECT_GT((y - d.center).norm(), d.radius) << "tick " << k << " inside a model disk";
+    }
+  }
+  EXPECT_GT(law_ticks, t.model_path.size() / 2);
+  const std::string json = trajectory_json(s, r);
+  EXPECT_NE(json.find("\"spaces\":"), std::string::npos);
+  EXPECT_NE(json.find("\"model_path\":"), std::string::npos);
+}
+
 TEST(RunScenario, TaskSpecCarriesTheScenariosParameters) {
   scenario::Scenario s = load("fig3");
   s.controller.p = 14;
