@@ -140,11 +140,7 @@ def action_at(t, time):
 
 def animation(t, out_dir, max_frames):
     robot = t["robot"]
-    n = len(robot)
-    step = max(1, math.ceil(n / max_frames))
-    frames = list(range(0, n, step))
-    if frames[-1] != n - 1:
-        frames.append(n - 1)
+    frames = frame_indices(len(robot), max_frames)
     dt = t["dt"]
     fig, ax = plt.subplots(figsize=(6, 6 * aspect(t)))
     patches = draw_static(ax, t, lambda f: False)
@@ -190,6 +186,23 @@ def polygon_patch(points, **kw):
     return Polygon(points, closed=True, **kw)
 
 
+def frame_panel(ax, lim, name):
+    ax.set_xlim(*lim[0])
+    ax.set_ylim(*lim[1])
+    ax.set_aspect("equal")
+    ax.set_axis_off()
+    ax.set_title(name, fontsize=8)
+
+
+def frame_indices(n, max_frames):
+    """At most about max_frames evenly spaced samples of 0..n-1, the last one included."""
+    step = max(1, math.ceil(n / max_frames))
+    frames = list(range(0, n, step))
+    if frames[-1] != n - 1:
+        frames.append(n - 1)
+    return frames
+
+
 def draw_mapped(ax, snap, lim):
     ax.clear()
     ax.add_patch(polygon_patch(snap["enclosing"], fill=False, edgecolor="black", linewidth=1.0))
@@ -197,11 +210,7 @@ def draw_mapped(ax, snap, lim):
     ax.add_patch(polygon_patch(fs["outer"], facecolor="#e8f1fb", edgecolor=ROBOT, linewidth=0.8))
     for h in fs["holes"]:
         ax.add_patch(polygon_patch(h, facecolor=DARK_GREY, edgecolor=DARK_GREY))
-    ax.set_xlim(*lim[0])
-    ax.set_ylim(*lim[1])
-    ax.set_aspect("equal")
-    ax.set_axis_off()
-    ax.set_title("mapped space (F_k in F_e)", fontsize=8)
+    frame_panel(ax, lim, "mapped space (F_k in F_e)")
 
 
 def draw_model(ax, snap, lim):
@@ -213,22 +222,14 @@ def draw_model(ax, snap, lim):
         ax.add_patch(Circle((x, y), r, facecolor=DARK_GREY, edgecolor=DARK_GREY))
     for c in m["convex"]:
         ax.add_patch(polygon_patch(c, facecolor=LIGHT_GREY, edgecolor="grey"))
-    ax.set_xlim(*lim[0])
-    ax.set_ylim(*lim[1])
-    ax.set_aspect("equal")
-    ax.set_axis_off()
-    ax.set_title("model space (disks and convex obstacles)", fontsize=8)
+    frame_panel(ax, lim, "model space (disks and convex obstacles)")
 
 
 def spaces_animation(t, out_dir, max_frames):
     """Three panels: the semantic space (as run.gif), the mapped space of the build in use and
     the model space with the law's model point."""
     robot, spaces, model_path = t["robot"], t["spaces"], t["model_path"]
-    n = len(robot)
-    step = max(1, math.ceil(n / max_frames))
-    frames = list(range(0, n, step))
-    if frames[-1] != n - 1:
-        frames.append(n - 1)
+    frames = frame_indices(len(robot), max_frames)
     dt = t["dt"]
     times = [s["t"] for s in spaces]
     xs = [p[0] for p in t["workspace"]]
