@@ -484,6 +484,21 @@ struct PlanExecutor::Impl {
     start_drive(p.x, p.x + d * h);
   }
 
+  // The robot's disk and the held object's, per kind of thing (ExecutionLog::clearance_by_kind).
+  void lower_by_kind(const Point& x, const Arrangement& a) {
+    std::vector<geometry::Disk> disks(a.size());
+    for (std::size_t i = 0; i < a.size(); ++i)
+      disks[i] = geometry::Disk{a[i], problem.object_radii[i]};
+    const std::optional<std::size_t> held = world.held();
+    geometry::ClearanceByKind& c = log.clearance_by_kind;
+    c.lower(problem.workspace, problem.obstacles, problem.familiar_count, disks, x,
+            problem.robot_radius, held);
+    if (held) {
+      c.lower(problem.workspace, problem.obstacles, problem.familiar_count, disks, a[*held],
+              disks[*held].radius, held);
+    }
+  }
+
   // --- one step ---
   void record_step() {
     const sim::Pose p = world.pose();
@@ -494,6 +509,7 @@ struct PlanExecutor::Impl {
     prev_robot = p.x;
     prev_objects = a;
     log.min_clearance = std::min(log.min_clearance, world.clearance());
+    lower_by_kind(p.x, a);
     log.collisions = world.collisions() - collisions_before;
     log.collision_events = world.collision_events();
     ++log.steps;
@@ -559,6 +575,7 @@ PlanExecutor::PlanExecutor(sim::SimWorld& world, const RearrangementProblem& pro
   m.prev_robot = p.x;
   m.prev_objects = m.objects();
   m.log.min_clearance = world.clearance();
+  m.lower_by_kind(p.x, m.prev_objects);
   m.collisions_before = world.collisions();
   m.log.sim_time = world.time();
   if (options.record) {

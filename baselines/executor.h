@@ -37,6 +37,7 @@
 
 #include "baselines/plan.h"
 #include "baselines/problem.h"
+#include "geometry/clearance_by_kind.h"
 #include "scenario/scenario.h"
 #include "sim/sim_world.h"
 
@@ -76,11 +77,12 @@ struct ExecutionLog {
   int collisions = 0;  // touching BeginContacts during the executor's steps (sim/)
   std::vector<std::string> collision_events;  // sim::SimWorld::collision_events, whole run
   double min_clearance = std::numeric_limits<double>::infinity();  // m, ground truth, every step
-  double sim_time = 0;                                             // s, world time
-  long steps = 0;                                                  // steps taken by the executor
-  double wall_time = 0;           // s of wall time spent inside tick()
-  double robot_path_length = 0;   // m, robot centre, sum of per-step displacements
-  double object_path_length = 0;  // m, summed over objects
+  geometry::ClearanceByKind clearance_by_kind;  // the same per kind of thing (robot, held object)
+  double sim_time = 0;                          // s, world time
+  long steps = 0;                               // steps taken by the executor
+  double wall_time = 0;                         // s of wall time spent inside tick()
+  double robot_path_length = 0;                 // m, robot centre, sum of per-step displacements
+  double object_path_length = 0;                // m, summed over objects
   std::vector<ExecutedAction> actions;
   std::vector<sim::Pose> robot;      // every step when recording, the pose at construction first
   std::vector<Arrangement> objects;  // the same steps, object centres

@@ -63,6 +63,7 @@ RearrangementProblem problem_from_scenario(const scenario::Scenario& s) {
     p.obstacles.push_back(f.polygon);
     p.obstacle_names.push_back(f.name);
   }
+  p.familiar_count = p.obstacles.size();
   for (const auto& u : s.unknown) {
     p.obstacles.push_back(u.polygon);
     p.obstacle_names.push_back(u.name);

@@ -53,6 +53,7 @@ struct RearrangementProblem {
   std::string name;
   geometry::Polygon workspace;
   std::vector<geometry::Polygon> obstacles;  // every familiar and unknown obstacle (full map)
+  std::size_t familiar_count = 0;            // obstacles[0, familiar_count) are the familiar
   std::vector<std::string> obstacle_names;
   double robot_radius = 0.2;
   Point robot_start = Point::Zero();

@@ -7,6 +7,7 @@
 #include "core/error.h"
 #include "core/rng.h"
 #include "experiment/json_writer.h"
+#include "experiment/run_scenario.h"
 #include "experiment/task_from_scenario.h"
 #include "experiment/trial_columns.h"
 #include "perception/semantic_map.h"
@@ -331,6 +332,7 @@ std::string baseline_metrics_json(const scenario::Scenario& s, const BaselineRec
   for (const std::string& c : e.collision_events) j.value(c);
   j.end_array();
   j.key("min_clearance").value(e.min_clearance);
+  experiment::clearance_by_kind_json(j, e.clearance_by_kind);
   j.key("sim_time_s").value(e.sim_time);
   j.key("steps").value(static_cast<std::int64_t>(e.steps));
   j.key("dt_s").value(s.simulation.dt);

@@ -60,16 +60,33 @@ void record_spaces(const Executive& exec, double t, TaskResult& res) {
   res.model_path.push_back(exec.law_commanded() ? c.last_law_sample().y : Point(nan, nan));
 }
 
-// TaskOptions::clearance_by_kind: the robot's disk and the held object's at this tick.
-void lower_by_kind(const perception::World& world, const Plant& plant, const Pose& pose,
-                   double robot_radius, TaskResult& res) {
-  std::vector<Point> centers(world.movable.size());
-  for (std::size_t i = 0; i < centers.size(); ++i) centers[i] = plant.object_center(i);
+// TaskOptions::clearance_by_kind: the world's obstacles (familiar first) and objects, the
+// objects' centres refreshed each tick.
+struct KindScene {
+  std::vector<geometry::Polygon> obstacles;
+  std::size_t familiar_count = 0;
+  std::vector<geometry::Disk> objects;
+};
+
+KindScene kind_scene(const perception::World& world) {
+  KindScene k;
+  for (const auto& f : world.familiar) k.obstacles.push_back(f.polygon);
+  k.familiar_count = k.obstacles.size();
+  for (const auto& u : world.unknown) k.obstacles.push_back(u.polygon);
+  for (const auto& m : world.movable) k.objects.push_back(m.disk);
+  return k;
+}
+
+// The robot's disk and the held object's at this tick.
+void lower_by_kind(const perception::World& world, KindScene& k, const Plant& plant,
+                   const Pose& pose, double robot_radius, TaskResult& res) {
+  for (std::size_t i = 0; i < k.objects.size(); ++i) k.objects[i].center = plant.object_center(i);
   const std::optional<std::size_t> held = plant.held();
-  res.clearance_by_kind.lower(world, centers, pose.x, robot_radius, held);
+  geometry::ClearanceByKind& c = res.clearance_by_kind;
+  c.lower(world.workspace, k.obstacles, k.familiar_count, k.objects, pose.x, robot_radius, held);
   if (held) {
-    res.clearance_by_kind.lower(world, centers, centers[*held], world.movable[*held].disk.radius,
-                                held);
+    c.lower(world.workspace, k.obstacles, k.familiar_count, k.objects, k.objects[*held].center,
+            k.objects[*held].radius, held);
   }
 }
 
@@ -105,12 +122,15 @@ TaskResult run_task(const TaskSpec& spec, Plant& plant, const TaskOptions& o) {
   if (o.record_path) res.object_paths.resize(n);
   double t = 0;
   Twist previous;  // the last tick's command
+  KindScene kinds = o.clearance_by_kind ? kind_scene(world) : KindScene{};
   const long max_steps = static_cast<long>(std::ceil(o.max_time / o.dt));
   for (long k = 0;; ++k) {
     const Pose pose = plant.pose();
     const double clearance = plant.clearance();
     res.min_clearance = std::min(res.min_clearance, clearance);
-    if (o.clearance_by_kind) lower_by_kind(world, plant, pose, spec.executive.robot_radius, res);
+    if (o.clearance_by_kind) {
+      lower_by_kind(world, kinds, plant, pose, spec.executive.robot_radius, res);
+    }
     if (o.record_path) {
       res.path.push_back(pose);
       for (std::size_t i = 0; i < n; ++i) res.object_paths[i].push_back(plant.object_center(i));

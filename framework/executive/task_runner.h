@@ -9,10 +9,10 @@
 #include <string>
 #include <vector>
 
-#include "executive/clearance_by_kind.h"
 #include "executive/executive.h"
 #include "executive/plant.h"
 #include "executive/region.h"
+#include "geometry/clearance_by_kind.h"
 #include "ltl/formula.h"
 #include "perception/sensor.h"
 #include "perception/world.h"
@@ -77,7 +77,7 @@ struct TaskResult {
   std::vector<std::string> collision_events;  // Plant::collision_events
   double min_clearance = 0;                   // m, ground truth over every step
   // The same per kind of thing (TaskOptions::clearance_by_kind; +infinity when not tracked).
-  ClearanceByKind clearance_by_kind;
+  geometry::ClearanceByKind clearance_by_kind;
   double sim_time = 0;  // s
   int steps = 0;
   double robot_path_length = 0;   // m

@@ -72,6 +72,22 @@ RunRecord run_scenario(const scenario::Scenario& s, const RunOptions& o) {
   return r;
 }
 
+void clearance_by_kind_json(JsonWriter& j, const geometry::ClearanceByKind& c) {
+  j.key("min_clearance_by_kind").begin_object();
+  for (const auto& [name, value] : {std::pair<const char*, double>{"familiar", c.familiar},
+                                    {"unknown", c.unknown},
+                                    {"objects", c.objects},
+                                    {"boundary", c.boundary}}) {
+    j.key(name);
+    if (std::isfinite(value)) {
+      j.value(value);
+    } else {
+      j.null();
+    }
+  }
+  j.end_object();
+}
+
 std::string metrics_json(const scenario::Scenario& s, const RunRecord& r) {
   const executive::TaskResult& t = r.result;
   JsonWriter j(true);
@@ -88,21 +104,7 @@ std::string metrics_json(const scenario::Scenario& s, const RunRecord& r) {
   for (const std::string& e : t.collision_events) j.value(e);
   j.end_array();
   j.key("min_clearance").value(t.min_clearance);
-  // Per kind (null when the scene has none of that kind): the robot's and the held object's.
-  j.key("min_clearance_by_kind").begin_object();
-  const executive::ClearanceByKind& c = t.clearance_by_kind;
-  for (const auto& [name, value] : {std::pair<const char*, double>{"familiar", c.familiar},
-                                    {"unknown", c.unknown},
-                                    {"objects", c.objects},
-                                    {"boundary", c.boundary}}) {
-    j.key(name);
-    if (std::isfinite(value)) {
-      j.value(value);
-    } else {
-      j.null();
-    }
-  }
-  j.end_object();
+  clearance_by_kind_json(j, t.clearance_by_kind);
   j.key("sim_time_s").value(t.sim_time);
   j.key("steps").value(t.steps);
   j.key("dt_s").value(s.simulation.dt);

@@ -9,6 +9,8 @@
 #include <vector>
 
 #include "executive/task_runner.h"
+#include "experiment/json_writer.h"
+#include "geometry/clearance_by_kind.h"
 #include "scenario/scenario.h"
 
 namespace rearm::experiment {
@@ -43,6 +45,10 @@ struct RunRecord {
 // Validates the task (check_task) and runs it. Bad input throws (scenario::ScenarioError or
 // rearm::Error); every outcome of the run itself is in the record.
 RunRecord run_scenario(const scenario::Scenario& s, const RunOptions& o = {});
+
+// "min_clearance_by_kind": {familiar, unknown, objects, boundary} (null for a kind never
+// measured), the key of rearm run's and the baselines' metrics.json.
+void clearance_by_kind_json(JsonWriter& j, const geometry::ClearanceByKind& c);
 
 // metrics.json: status, reason, collisions, min_clearance, sim_time_s, wall_time_s,
 // controller_time_s, real_time_factor, actions (with Fix-mode marks), fix_mode_entries,

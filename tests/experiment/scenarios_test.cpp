@@ -62,7 +62,7 @@ TEST_P(Scenarios, CompleteSafelyWithTheFormulasActions) {
   }
   // The clearance per kind of thing: their least is the plant's clearance (its own geometry);
   // fig5 works through clutter (within 0.5 m of a familiar and of an unknown obstacle).
-  const executive::ClearanceByKind& c = t.clearance_by_kind;
+  const geometry::ClearanceByKind& c = t.clearance_by_kind;
   EXPECT_NEAR(std::min({c.familiar, c.unknown, c.objects, c.boundary}), t.min_clearance, 1e-9);
   if (e.name == "fig5") {
     EXPECT_LE(c.familiar, 0.5);
