@@ -90,6 +90,40 @@ void lower_by_kind(const perception::World& world, KindScene& k, const Plant& pl
   }
 }
 
+// The gripper acts; perception records what it holds (a failed grip holds nothing, and the
+// executive ends the grasp stuck on the next tick).
+void apply_gripper(const Command& cmd, const perception::World& world, Plant& plant,
+                   perception::SemanticMap& map) {
+  if (cmd.gripper == GripperAction::kClose) {
+    std::size_t i = 0;
+    const std::size_t n = world.movable.size();
+    while (i < n && world.movable[i].id != cmd.object) ++i;
+    if (i < n && plant.grip(i)) map.set_carried(cmd.object);
+  } else if (cmd.gripper == GripperAction::kOpen) {
+    plant.release();
+    map.set_carried(std::nullopt);
+  }
+}
+
+// The task's outcome, counters and compute split from the executive and the plant.
+void finish(const Executive& exec, const Plant& plant, double mission_setup, TaskResult& res) {
+  res.status = exec.status();
+  res.reason = exec.reason();
+  res.actions = exec.actions();
+  res.fix_mode_entries = exec.fix_mode_entries();
+  res.recoveries = exec.recoveries();
+  res.collisions = plant.collisions();
+  res.collision_events = plant.collision_events();
+  res.rebuilds = exec.rebuilds();
+  res.topology_checks = exec.topology_checks();
+  const ComputeTimes& ct = exec.compute_times();
+  res.mission_time = mission_setup + ct.mission_s;
+  res.topology_time = ct.topology_s;
+  res.rebuild_time = ct.rebuild_s;
+  res.control_time =
+      std::max(0.0, res.controller_time - ct.mission_s - ct.topology_s - ct.rebuild_s);
+}
+
 }  // namespace
 
 TaskResult run_task(const TaskSpec& spec, Plant& plant, const TaskOptions& o) {
@@ -146,16 +180,7 @@ TaskResult run_task(const TaskSpec& spec, Plant& plant, const TaskOptions& o) {
     if (o.check_invariants) check_tick(cmd, previous, clearance, exec, t);
     if (o.record_spaces && o.record_path) record_spaces(exec, t, res);
     previous = cmd.u;
-    // The gripper acts; perception records what it holds (a failed grip holds nothing, and the
-    // executive ends the grasp stuck on the next tick).
-    if (cmd.gripper == GripperAction::kClose) {
-      std::size_t i = 0;
-      while (i < n && world.movable[i].id != cmd.object) ++i;
-      if (i < n && plant.grip(i)) map.set_carried(cmd.object);
-    } else if (cmd.gripper == GripperAction::kOpen) {
-      plant.release();
-      map.set_carried(std::nullopt);
-    }
+    apply_gripper(cmd, world, plant, map);
     if (exec.finished()) break;
     if (k >= max_steps) {
       exec.abort(TaskStatus::kTimeout,
@@ -175,22 +200,8 @@ TaskResult run_task(const TaskSpec& spec, Plant& plant, const TaskOptions& o) {
     }
   }
   res.min_clearance = std::min(res.min_clearance, plant.clearance());
-  res.status = exec.status();
-  res.reason = exec.reason();
-  res.actions = exec.actions();
-  res.fix_mode_entries = exec.fix_mode_entries();
-  res.recoveries = exec.recoveries();
-  res.collisions = plant.collisions();
-  res.collision_events = plant.collision_events();
   res.sim_time = t;
-  res.rebuilds = exec.rebuilds();
-  res.topology_checks = exec.topology_checks();
-  const ComputeTimes& ct = exec.compute_times();
-  res.mission_time = mission_setup + ct.mission_s;
-  res.topology_time = ct.topology_s;
-  res.rebuild_time = ct.rebuild_s;
-  res.control_time =
-      std::max(0.0, res.controller_time - ct.mission_s - ct.topology_s - ct.rebuild_s);
+  finish(exec, plant, mission_setup, res);
   res.wall_time = seconds_since(wall_start);
   return res;
 }

@@ -21,7 +21,8 @@ void check_finite(const Point& x, const char* what) {
 // Slack of the bounding-box skip of disk_clearance (m).
 constexpr double kBoxSkipMargin = 1e-9;
 
-// Euclidean distance from x to the polygon's axis-aligned bounding box (0 inside it).
+}  // namespace
+
 double box_distance(const Polygon& p, const Point& x) {
   double x0 = p.vertices.front().x(), x1 = x0, y0 = p.vertices.front().y(), y1 = y0;
   for (const Point& v : p.vertices) {
@@ -34,8 +35,6 @@ double box_distance(const Polygon& p, const Point& x) {
   const double dy = std::max({y0 - x.y(), 0.0, x.y() - y1});
   return std::hypot(dx, dy);
 }
-
-}  // namespace
 
 Point nearest_on_segment(const Point& a, const Point& b, const Point& x) {
   const Point d = b - a;

@@ -32,6 +32,9 @@ double signed_distance(const Polygon& p, const Point& x);
 double disk_clearance(const Polygon& workspace, const std::vector<Polygon>& obstacles,
                       const std::vector<Disk>& objects, const Point& center, double radius,
                       std::optional<std::size_t> skip = std::nullopt);
+// Euclidean distance from x to the polygon's axis-aligned bounding box (0 inside it): a lower
+// bound of its distance to the polygon, without a square root per edge.
+double box_distance(const Polygon& p, const Point& x);
 // Nearest point of a segment [a, b] to x.
 Point nearest_on_segment(const Point& a, const Point& b, const Point& x);
 
