@@ -219,8 +219,7 @@ bool Executive::fetch_ltl(double t) {
         break;
       case symbolic::MissionStatus::Accepting:
         if (restore_next(t)) return true;
-        finish(TaskStatus::kCompleted,
-               "mission complete: the automaton stays in an accepting state", t);
+        finish_accepting(t);
         break;
       case symbolic::MissionStatus::InProgress:
         finish(TaskStatus::kStuck, "the mission controller returned no action", t);
@@ -1425,9 +1424,12 @@ Executive::Moving Executive::moving(const Activity& a, const Pose& pose) const {
 // placed (the formula's "eventually release" held when they were released, the task's end state
 // has them elsewhere). Each is released into its region again as an interface-layer action, at
 // most 2 × (objects + 1) times per task.
+std::size_t Executive::restore_limit() const {
+  return 2 * (map_.ground_truth().movable.size() + 1);
+}
+
 bool Executive::restore_next(double t) {
-  const std::size_t limit = 2 * (map_.ground_truth().movable.size() + 1);
-  while (!displaced_.empty() && restores_ < limit) {
+  while (!displaced_.empty() && restores_ < restore_limit()) {
     const auto [object, region] = displaced_.front();
     displaced_.erase(displaced_.begin());
     const auto it = placed_.find(object);
@@ -1440,6 +1442,31 @@ bool Executive::restore_next(double t) {
     return true;
   }
   return false;
+}
+
+// The mission is accepting and no restore is left to try. The objects an LTL RELEASE placed and
+// Fix mode later moved, as the map locates them, are named. With the restores on, the task then
+// ends stuck: the executive could not keep the end state it set out to restore (a restore that
+// ended infeasible, or restores that ran out, two objects each in the other's way in turn).
+// Without them (the paper variant) the formula, which speaks of actions only, holds: completed,
+// with the objects named in the reason.
+void Executive::finish_accepting(double t) {
+  const std::string done = "mission complete: the automaton stays in an accepting state";
+  std::string moved;
+  for (const auto& [object, id] : placed_) {
+    const auto d = map_.object(object);
+    if (d && geometry::contains(region(id).polygon, d->center)) continue;
+    moved += (moved.empty() ? "" : ", ") + object + " not in " + id;
+  }
+  if (moved.empty()) return finish(TaskStatus::kCompleted, done, t);
+  if (p_.robust.restore) {
+    return finish(TaskStatus::kStuck,
+                  "objects an LTL RELEASE placed and Fix mode moved are not back after " +
+                      std::to_string(restores_) + " restore(s) (at most " +
+                      std::to_string(restore_limit()) + "): " + moved + " (the formula holds)",
+                  t);
+  }
+  finish(TaskStatus::kCompleted, done + "; Fix mode moved placed objects: " + moved, t);
 }
 
 RecoveryCounts Executive::recoveries() const {

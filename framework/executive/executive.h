@@ -515,6 +515,9 @@ class Executive {
   Activity make(Kind kind, std::string object, std::string region, bool fix, double t) const;
   bool fetch_ltl(double t);
   bool restore_next(double t);
+  std::size_t restore_limit() const;  // 2 (objects + 1) restores per task
+  // The end of a mission that is accepting (completed, or stuck when a restore failed).
+  void finish_accepting(double t);
   Advance advance(Activity& a, const Pose& pose, double t, double dt);
   // The phases of advance() (see the header comment).
   Advance prerequisites_then_navigate(Activity& a, const Pose& pose, double t, double dt);
