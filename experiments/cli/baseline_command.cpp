@@ -124,20 +124,10 @@ int run_baseline(const std::vector<std::string>& args) {
       r.executed ? "yes" : "no", r.execution.collisions, r.execution.sim_time);
   std::printf("wrote %s and %s\n", metrics.string().c_str(), trajectory.string().c_str());
   if (plot && r.executed) {
-    const std::string py = find_python({"matplotlib", "PIL"});
-    const fs::path script = plot_script("run.py");
-    if (py.empty() || !fs::exists(script)) {
-      std::fprintf(stderr,
-                   "rearm baseline: warning: no python3 with matplotlib and pillow (or no "
-                   "plotting script); the figure was not drawn\n");
-    } else {
-      std::string cmd = shell_quote(py) + " " + shell_quote(script.string()) + " " +
-                        shell_quote(trajectory.string()) + " " + shell_quote(out_dir);
-      if (!animation) cmd += " --no-animation";
-      if (std::system(cmd.c_str()) != 0) {
-        std::fprintf(stderr, "rearm baseline: plotting failed: %s\n", cmd.c_str());
-        return kExitFailure;
-      }
+    std::vector<std::string> plot_args{trajectory.string(), out_dir};
+    if (!animation) plot_args.push_back("--no-animation");
+    if (run_plot("baseline", "run.py", {"matplotlib", "PIL"}, plot_args) == PlotOutcome::kFailed) {
+      return kExitFailure;
     }
   }
   return r.status == "completed" ? kExitOk : kExitFailure;

@@ -1,56 +1,63 @@
-// rearm diffeo SCENE.yaml --out DIR [--seed N] [--starts N] [--robot unicycle|holonomic]
-//              [--no-plot]
-// Builds the mapped space and the diffeomorphism h of a static, fully known scene
-// (docs/reactive.md §2–3), writes everything needed to draw them to DIR/diffeo.json, and
-// plots it with experiments/plot/diffeo.py.
+// rearm diffeo SCENARIO.yaml --out DIR [--goal NAME|X,Y] [--seed N] [--starts N]
+//              [--robot unicycle|holonomic] [--no-plot]
+// Builds the mapped space and the diffeomorphism h of a scenario's scene with every obstacle
+// known (docs/reactive.md §2–3), integrates the closed loop (reactive::run_closed_loop) from the
+// robot's start, writes everything needed to draw them to DIR/diffeo.json, and plots it with
+// experiments/plot/diffeo.py.
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <limits>
 #include <numbers>
-#include <sstream>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "command.h"
 #include "core/error.h"
+#include "core/file_io.h"
 #include "core/rng.h"
+#include "experiment/json_writer.h"
+#include "experiment/task_from_scenario.h"
 #include "geometry/distance.h"
 #include "python_plot.h"
+#include "reactive/closed_loop.h"
 #include "reactive/diffeomorphism.h"
-#include "reactive/kinematics.h"
 #include "reactive/mapped_space.h"
-#include "reactive/navigation.h"
 #include "reactive/reactive_controller.h"
-#include "scene_file.h"
+#include "scenario/scenario_io.h"
 
 namespace rearm::cli {
 namespace {
 
 namespace fs = std::filesystem;
+using experiment::JsonWriter;
 using geometry::Disk;
 using geometry::Point;
 using geometry::Polygon;
 
 constexpr const char* kUsage =
-    "usage: rearm diffeo SCENE.yaml --out DIR [--seed N] [--starts N]\n"
+    "usage: rearm diffeo SCENARIO.yaml --out DIR [--goal NAME|X,Y] [--seed N] [--starts N]\n"
     "                    [--robot unicycle|holonomic] [--no-plot]\n\n"
     "Builds the mapped space and the purging diffeomorphism h (docs/reactive.md §2-3) of the\n"
-    "static scene SCENE.yaml (format: experiments/scenes/README.md), with every obstacle\n"
-    "known, and integrates the closed loop from the scene's start to its goal (and from N\n"
-    "random free starts drawn with --seed, default 1). Writes DIR/diffeo.json: the semantic,\n"
-    "mapped and model spaces, every purge (piece, collar, centre, kind, parent), a grid of\n"
-    "freespace lines with their images under h, and the paths in mapped and model\n"
-    "coordinates. Then runs experiments/plot/diffeo.py, which draws DIR/semantic.png,\n"
-    "DIR/mapped.png, DIR/model.png and DIR/path.png (skipped with a warning when python3 or\n"
-    "matplotlib is missing; set REARM_PYTHON to choose the interpreter).\n\n"
+    "scene of SCENARIO.yaml (format: experiments/scenarios/README.md) with every obstacle\n"
+    "known (unknown obstacles as if fully seen, objects as disks), and integrates the closed\n"
+    "loop from the robot's start to the goal (and from N random free starts drawn with\n"
+    "--seed, default 1). Writes DIR/diffeo.json: the semantic, mapped and model spaces, every\n"
+    "purge (piece, collar, centre, kind, parent), a grid of freespace lines with their images\n"
+    "under h, and the paths in mapped and model coordinates. Then runs\n"
+    "experiments/plot/diffeo.py, which draws DIR/semantic.png, DIR/mapped.png, DIR/model.png\n"
+    "and DIR/path.png (skipped with a warning when python3 or matplotlib is missing; set\n"
+    "REARM_PYTHON to choose the interpreter).\n\n"
+    "  --goal G    a region's name or a point X,Y; default: the first region with a point in\n"
+    "              the start's freespace component (of a region, the free point nearest its\n"
+    "              centroid, on a 5 cm grid)\n"
     "  --robot     unicycle (differential drive, default) or holonomic (fully actuated)\n"
-    "  --starts N  extra closed-loop runs from random free starts (default 0)\n"
+    "  --starts N  extra closed-loop runs from random free starts (default 0, at most 1000)\n"
     "  --no-plot   write the JSON only\n\n"
     "Exit codes: 0 every path reached the goal, 1 a path failed (the JSON is still written),\n"
-    "2 bad usage or a bad scene.\n";
+    "2 bad usage or a bad scenario.\n";
 
 // Closed-loop integration (docs/reactive.md §6).
 constexpr double kMaxTime = 400;         // s of simulated time per path
@@ -59,169 +66,184 @@ constexpr int kRecordEvery = 5;          // steps between recorded path points
 // Random starts: at least this far (m) from every boundary of the freespace.
 constexpr double kStartClearance = 0.2;
 constexpr int kStartDraws = 100000;
+constexpr std::uint64_t kMaxStarts = 1000;
 // The drawing grid: lines per longer side of F_e, samples per grid cell along a line.
 constexpr int kGridLines = 40;
 constexpr int kSamplesPerCell = 8;
 // Samples along each familiar component's boundary (its image lands on ∂(model disk)).
 constexpr double kBoundarySpacing = 0.02;  // m
+// m: the spacing of the points tried for a goal inside a region whose centroid is not free.
+constexpr double kGoalGrid = 0.05;
+// Significant digits of diffeo.json's numbers: drawing data, where 9 are plenty.
+constexpr int kJsonDigits = 9;
 
-// ---- JSON output (numbers with 17 significant digits would bloat the grid; 9 is plenty
-// for drawing). Non-finite numbers are written as null and counted.
-class Json {
- public:
-  std::string str() const { return out_.str(); }
-  int non_finite() const { return non_finite_; }
-
-  void num(double v) {
-    if (!std::isfinite(v)) {
-      ++non_finite_;
-      out_ << "null";
-      return;
-    }
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.9g", v);
-    out_ << buf;
-  }
-  void point(const Point& p) {
-    out_ << '[';
-    num(p.x());
-    out_ << ',';
-    num(p.y());
-    out_ << ']';
-  }
-  void polygon(const Polygon& p) {
-    out_ << '[';
-    for (std::size_t i = 0; i < p.size(); ++i) {
-      if (i) out_ << ',';
-      point(p.vertices[i]);
-    }
-    out_ << ']';
-  }
-  void polygons(const std::vector<Polygon>& ps) {
-    out_ << '[';
-    for (std::size_t i = 0; i < ps.size(); ++i) {
-      if (i) out_ << ",\n";
-      polygon(ps[i]);
-    }
-    out_ << ']';
-  }
-  void disk(const Disk& d) {
-    out_ << "{\"center\":";
-    point(d.center);
-    out_ << ",\"radius\":";
-    num(d.radius);
-    out_ << '}';
-  }
-  void disks(const std::vector<Disk>& ds) {
-    out_ << '[';
-    for (std::size_t i = 0; i < ds.size(); ++i) {
-      if (i) out_ << ',';
-      disk(ds[i]);
-    }
-    out_ << ']';
-  }
-  void points(const std::vector<Point>& ps) {
-    out_ << '[';
-    for (std::size_t i = 0; i < ps.size(); ++i) {
-      if (i) out_ << ',';
-      point(ps[i]);
-    }
-    out_ << ']';
-  }
-  void str(const std::string& s) {
-    out_ << '"';
-    for (char c : s) {
-      if (c == '"' || c == '\\') {
-        out_ << '\\' << c;
-      } else if (static_cast<unsigned char>(c) < 0x20) {
-        char buf[8];
-        std::snprintf(buf, sizeof buf, "\\u%04x", c);
-        out_ << buf;
-      } else {
-        out_ << c;
-      }
-    }
-    out_ << '"';
-  }
-  void key(const char* k) { out_ << '"' << k << "\":"; }
-  std::ostringstream& raw() { return out_; }
-
- private:
-  std::ostringstream out_;
-  int non_finite_ = 0;
+// The command line, parsed.
+struct DiffeoArgs {
+  std::string scenario, out_dir, goal;
+  std::uint64_t seed = 1;
+  int starts = 0;
+  reactive::RobotModel robot = reactive::RobotModel::kUnicycle;
+  bool plot = true, help = false;
 };
 
-enum class Robot { kUnicycle, kHolonomic };
-
-struct PathRun {
-  Point start;
-  double heading = 0;
-  std::string status;  // reached | timeout | error: ... | collision
-  double time = 0;
-  std::vector<Point> mapped;
-  std::vector<double> headings;
-  std::vector<Point> model;
-};
-
-// One closed-loop run with the navigation law of docs/reactive.md §4, integrated by the
-// exact zero-order-hold steps of reactive/kinematics.h.
-PathRun integrate(const SceneFile& scene, const Point& start, double heading, Robot robot) {
-  PathRun run;
-  run.start = start;
-  run.heading = heading;
-  const Point& goal = scene.goal;
-  reactive::NavParams np;
-  np.sensing_range = scene.sensing_range;
-  // The reactive controller (the mapped space and diffeomorphism of the scene, seen from this
-  // start), so the path gets its discrete-time safety filter too.
-  reactive::ReactiveController controller(scene.params, np);
-  controller.rebuild(scene.semantic, scene.radius, start, goal);
-  const reactive::MappedSpace& m = controller.mapped();
-  const reactive::Diffeomorphism& h = controller.diffeo();
-  reactive::Pose pose{start, heading};
-  const double dt = reactive::kDefaultStep;
-  const int steps = static_cast<int>(kMaxTime / dt);
-  auto record = [&]() {
-    run.mapped.push_back(pose.x);
-    run.headings.push_back(pose.psi);
-    run.model.push_back(h.map(pose.x));
-  };
-  run.status = "timeout";
-  for (int k = 0; k <= steps; ++k) {
-    if (k % kRecordEvery == 0) record();
-    if ((pose.x - goal).norm() <= kGoalTolerance) {
-      if (k % kRecordEvery != 0) record();
-      run.status = "reached";
-      break;
-    }
-    if (k == steps) break;
-    try {
-      if (robot == Robot::kUnicycle) {
-        pose = reactive::unicycle_step(pose, controller.unicycle(pose, dt), dt);
-      } else {
-        pose.x = reactive::holonomic_step(pose.x, controller.holonomic(pose.x, dt), dt);
+DiffeoArgs parse_diffeo_args(const std::vector<std::string>& args) {
+  DiffeoArgs d;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    if (a == "--help" || a == "-h") {
+      d.help = true;
+      return d;
+    } else if (a == "--out") {
+      d.out_dir = option_value(args, i);
+    } else if (a == "--goal") {
+      d.goal = option_value(args, i);
+    } else if (a == "--seed") {
+      d.seed = parse_count(a, option_value(args, i));
+    } else if (a == "--starts") {
+      const std::uint64_t n = parse_count(a, option_value(args, i));
+      if (n > kMaxStarts) throw Error("--starts must be at most " + std::to_string(kMaxStarts));
+      d.starts = static_cast<int>(n);
+    } else if (a == "--robot") {
+      const std::string& v = option_value(args, i);
+      if (v != "unicycle" && v != "holonomic") {
+        throw Error("--robot expects unicycle or holonomic, got '" + v + "'");
       }
-    } catch (const Error& err) {
-      if (k % kRecordEvery != 0) record();
-      run.status = std::string("error: ") + err.what();
-      break;
-    }
-    run.time = (k + 1) * dt;
-    if (!reactive::in_freespace(m, pose.x)) {
-      record();
-      run.status = "collision";
-      break;
+      d.robot =
+          v == "unicycle" ? reactive::RobotModel::kUnicycle : reactive::RobotModel::kHolonomic;
+    } else if (a == "--no-plot") {
+      d.plot = false;
+    } else if (a.rfind("--", 0) == 0 || !d.scenario.empty()) {
+      throw Error("unknown argument '" + a + "'\n" + kUsage);
+    } else {
+      d.scenario = a;
     }
   }
-  return run;
+  if (d.scenario.empty()) throw Error(std::string("missing SCENARIO.yaml\n") + kUsage);
+  if (d.out_dir.empty()) throw Error(std::string("missing --out DIR\n") + kUsage);
+  return d;
 }
 
+// The static scene of a scenario, as the reactive layer sees it with every obstacle known.
+struct Scene {
+  std::string source;
+  reactive::SemanticInput semantic;
+  double radius = 0, sensor_range = 0, heading = 0;
+  Point start = Point::Zero(), goal = Point::Zero();
+  reactive::DiffeoParams params;
+  reactive::NavParams nav;
+};
+
+Scene scene_of(const scenario::Scenario& s) {
+  Scene c;
+  c.source = s.source;
+  c.semantic.workspace = s.workspace;
+  for (const auto& f : s.familiar) c.semantic.familiar.push_back(f.polygon);
+  for (const auto& u : s.unknown) c.semantic.unknown.push_back(u.polygon);
+  for (const auto& o : s.objects) c.semantic.movable.push_back(o.disk);
+  c.radius = s.robot.radius;
+  c.sensor_range = s.robot.sensor_range;
+  c.start = s.robot.start;
+  c.heading = s.robot.heading;
+  c.params = experiment::diffeo_params(s);
+  c.nav = experiment::nav_params(s);
+  return c;
+}
+
+// "X,Y" as a finite point, or nullopt when the text is not two numbers.
+std::optional<Point> point_of(const std::string& text) {
+  const std::size_t comma = text.find(',');
+  if (comma == std::string::npos || text.find(',', comma + 1) != std::string::npos) {
+    return std::nullopt;
+  }
+  return Point(parse_number("--goal", text.substr(0, comma)),
+               parse_number("--goal", text.substr(comma + 1)));
+}
+
+// The point of region r in the start's freespace component nearest its centroid, on a grid of
+// kGoalGrid (the centroid itself when free), or nullopt when none is.
+std::optional<Point> free_point(const Polygon& r, const reactive::MappedSpace& m) {
+  const Point c = r.centroid();
+  if (reactive::in_freespace(m, c)) return c;
+  Eigen::Vector2d lo = r.vertices[0], hi = lo;
+  for (const Point& v : r.vertices) {
+    lo = lo.cwiseMin(v);
+    hi = hi.cwiseMax(v);
+  }
+  std::optional<Point> best;
+  for (double x = lo.x(); x <= hi.x(); x += kGoalGrid) {
+    for (double y = lo.y(); y <= hi.y(); y += kGoalGrid) {
+      const Point q(x, y);
+      if (!geometry::contains(r, q) || !reactive::in_freespace(m, q)) continue;
+      if (!best || (q - c).norm() < (*best - c).norm()) best = q;
+    }
+  }
+  return best;
+}
+
+// The goal of --goal (a region's name or X,Y), or the first region with a free point.
+Point goal_of(const scenario::Scenario& s, const std::string& arg, const reactive::MappedSpace& m) {
+  for (const auto& r : s.regions) {
+    if (!arg.empty() && r.name != arg) continue;
+    if (const auto p = free_point(r.polygon, m)) return *p;
+    if (!arg.empty()) throw Error("--goal: no point of region " + arg + " is free");
+  }
+  if (arg.empty()) {
+    throw Error(
+        "no region has a point in the robot's freespace component; give the goal "
+        "with --goal X,Y");
+  }
+  if (const auto p = point_of(arg)) return *p;
+  throw Error("--goal: '" + arg + "' is neither a region of the scenario nor a point X,Y");
+}
+
+// The signed clearance of x in the mapped freespace (negative outside).
 double freespace_clearance(const reactive::MappedSpace& m, const Point& x) {
   double d = geometry::nearest_on_boundary(m.freespace.outer, x).distance;
   for (const Polygon& hole : m.freespace.holes) {
     d = std::min(d, geometry::nearest_on_boundary(hole, x).distance);
   }
-  return d;
+  return reactive::in_freespace(m, x) ? d : -d;
+}
+
+struct PathRun {
+  reactive::Pose start;
+  std::string status;  // reached | timeout | collision | error: ...
+  double time = 0;
+  std::vector<reactive::Pose> poses;  // every kRecordEvery-th step and the last
+  std::vector<Point> model;           // h of each recorded position
+};
+
+// One run of the closed loop (reactive::run_closed_loop) in the static scene, its own
+// controller built from this start.
+PathRun integrate(const Scene& scene, const reactive::Pose& start, reactive::RobotModel robot) {
+  reactive::ReactiveController controller(scene.params, scene.nav);
+  bool sensed = false;
+  const auto sense = [&](const reactive::Pose&) -> std::optional<reactive::SemanticInput> {
+    if (sensed) return std::nullopt;
+    sensed = true;
+    return scene.semantic;
+  };
+  const auto clearance = [&](const reactive::Pose& p) {
+    return freespace_clearance(controller.mapped(), p.x);
+  };
+  reactive::ClosedLoopOptions o;
+  o.model = robot;
+  o.max_time = kMaxTime;
+  o.goal_tolerance = kGoalTolerance;
+  o.radius = scene.radius;
+  const reactive::ClosedLoopResult r =
+      reactive::run_closed_loop(controller, start, scene.goal, sense, clearance, o);
+  PathRun run{start, "", r.time, {}, {}};
+  run.status = r.status == reactive::ClosedLoopResult::Status::kReached   ? "reached"
+               : r.status == reactive::ClosedLoopResult::Status::kTimeout ? "timeout"
+                                                                          : "error: " + r.message;
+  if (r.min_clearance < 0) run.status = "collision";
+  for (std::size_t k = 0; k < r.path.size(); ++k) {
+    if (k % kRecordEvery != 0 && k + 1 != r.path.size()) continue;
+    run.poses.push_back(r.path[k]);
+    run.model.push_back(controller.diffeo().map(r.path[k].x));
+  }
+  return run;
 }
 
 Point random_start(Rng& rng, const reactive::MappedSpace& m) {
@@ -232,14 +254,41 @@ Point random_start(Rng& rng, const reactive::MappedSpace& m) {
   }
   for (int i = 0; i < kStartDraws; ++i) {
     const Point x(rng.uniform(lo.x(), hi.x()), rng.uniform(lo.y(), hi.y()));
-    if (reactive::in_freespace(m, x) && freespace_clearance(m, x) >= kStartClearance) return x;
+    if (freespace_clearance(m, x) >= kStartClearance) return x;
   }
   throw BudgetExceeded("no free start found in " + std::to_string(kStartDraws) + " draws");
 }
 
+// ---- diffeo.json (experiments/plot/diffeo.py reads it) ----
+void put(JsonWriter& j, const Point& p) { j.begin_array().value(p.x()).value(p.y()).end_array(); }
+
+void put(JsonWriter& j, const std::vector<Point>& ps) {
+  j.begin_array();
+  for (const Point& p : ps) put(j, p);
+  j.end_array();
+}
+
+void put(JsonWriter& j, const Polygon& p) { put(j, p.vertices); }
+
+void put(JsonWriter& j, const std::vector<Polygon>& ps) {
+  j.begin_array();
+  for (const Polygon& p : ps) put(j, p);
+  j.end_array();
+}
+
+void put(JsonWriter& j, const std::vector<Disk>& ds) {
+  j.begin_array();
+  for (const Disk& d : ds) {
+    j.begin_object().key("center");
+    put(j, d.center);
+    j.key("radius").value(d.radius).end_object();
+  }
+  j.end_array();
+}
+
 // Lines of the freespace (horizontal and vertical, through F_e's bounding box) cut into the
-// runs of samples that lie in F_k, each with its image under h.
-void write_grid(Json& j, const reactive::MappedSpace& m, const reactive::Diffeomorphism& h) {
+// runs of samples that lie in F_k.
+std::vector<std::vector<Point>> grid_runs(const reactive::MappedSpace& m) {
   Eigen::Vector2d lo = m.enclosing.vertices[0], hi = lo;
   for (const Point& v : m.enclosing.vertices) {
     lo = lo.cwiseMin(v);
@@ -260,54 +309,105 @@ void write_grid(Json& j, const reactive::MappedSpace& m, const reactive::Diffeom
         x[axis] = std::min(hi[axis], lo[axis] + s * step);
         if (reactive::in_freespace(m, x)) {
           run.push_back(x);
-        } else if (!run.empty()) {
-          if (run.size() > 1) runs.push_back(std::move(run));
+        } else {
+          if (run.size() > 1) runs.push_back(run);
           run.clear();
         }
       }
-      if (run.size() > 1) runs.push_back(std::move(run));
+      if (run.size() > 1) runs.push_back(run);
     }
   }
-  j.raw() << '[';
-  for (std::size_t i = 0; i < runs.size(); ++i) {
-    if (i) j.raw() << ",\n";
-    std::vector<Point> images;
-    images.reserve(runs[i].size());
-    for (const Point& x : runs[i]) images.push_back(h.map(x));
-    j.raw() << "{\"mapped\":";
-    j.points(runs[i]);
-    j.raw() << ",\"model\":";
-    j.points(images);
-    j.raw() << '}';
+  return runs;
+}
+
+// Mapped points and their images under h, as {"mapped": [...], "model": [...]}.
+void put_images(JsonWriter& j, const std::vector<Point>& xs, const reactive::Diffeomorphism& h) {
+  std::vector<Point> ys;
+  ys.reserve(xs.size());
+  for (const Point& x : xs) ys.push_back(h.map(x));
+  j.key("mapped");
+  put(j, xs);
+  j.key("model");
+  put(j, ys);
+}
+
+void put_grid(JsonWriter& j, const reactive::MappedSpace& m, const reactive::Diffeomorphism& h) {
+  j.key("grid").begin_array();
+  for (const auto& run : grid_runs(m)) {
+    j.begin_object();
+    put_images(j, run, h);
+    j.end_object();
   }
-  j.raw() << ']';
+  j.end_array();
 }
 
 // Each familiar component's boundary, densely sampled, and its image (on ∂F_e or a model
 // disk's circle when h is right).
-void write_boundary_images(Json& j, const reactive::MappedSpace& m,
-                           const reactive::Diffeomorphism& h) {
-  j.raw() << '[';
+void put_boundary_images(JsonWriter& j, const reactive::MappedSpace& m,
+                         const reactive::Diffeomorphism& h) {
+  j.key("boundary_images").begin_array();
   for (std::size_t c = 0; c < m.familiar.size(); ++c) {
     const Polygon& p = m.familiar[c].polygon;
-    std::vector<Point> xs, ys;
+    std::vector<Point> xs;
     for (std::size_t i = 0; i < p.size(); ++i) {
       const Point a = p.vertices[i], b = p.vertices[(i + 1) % p.size()];
       const int n = std::max(1, static_cast<int>(std::ceil((b - a).norm() / kBoundarySpacing)));
-      for (int k = 0; k < n; ++k) {
-        const Point x = a + (b - a) * (static_cast<double>(k) / n);
-        xs.push_back(x);
-        ys.push_back(h.map(x));
-      }
+      for (int k = 0; k < n; ++k) xs.push_back(a + (b - a) * (static_cast<double>(k) / n));
     }
-    if (c) j.raw() << ",\n";
-    j.raw() << "{\"component\":" << c << ",\"mapped\":";
-    j.points(xs);
-    j.raw() << ",\"model\":";
-    j.points(ys);
-    j.raw() << '}';
+    j.begin_object().key("component").value(static_cast<std::int64_t>(c));
+    put_images(j, xs, h);
+    j.end_object();
   }
-  j.raw() << ']';
+  j.end_array();
+}
+
+void put_header(JsonWriter& j, const DiffeoArgs& a, const Scene& s,
+                const reactive::DiffeoParams& p) {
+  j.key("scene").value(a.scenario).key("seed").value(a.seed);
+  j.key("robot").begin_object();
+  j.key("model").value(a.robot == reactive::RobotModel::kUnicycle ? "unicycle" : "holonomic");
+  j.key("radius").value(s.radius).key("sensor_range").value(s.sensor_range).key("start");
+  put(j, s.start);
+  j.key("heading").value(s.heading).key("goal");
+  put(j, s.goal);
+  j.end_object();
+  j.key("params").begin_object().key("p").value(p.p).key("epsilon").value(p.epsilon);
+  j.key("mu1").value(p.mu1).key("mu2").value(p.mu2).end_object();
+  j.key("semantic").begin_object().key("workspace");
+  put(j, s.semantic.workspace);
+  j.key("familiar");
+  put(j, s.semantic.familiar);
+  j.key("unknown");
+  put(j, s.semantic.unknown);
+  j.key("movable");
+  put(j, s.semantic.movable);
+  j.end_object();
+}
+
+void put_mapped(JsonWriter& j, const reactive::MappedSpace& m) {
+  j.key("mapped").begin_object().key("radius").value(m.radius).key("enclosing");
+  put(j, m.enclosing);
+  j.key("freespace").begin_object().key("outer");
+  put(j, m.freespace.outer);
+  j.key("holes");
+  put(j, m.freespace.holes);
+  j.end_object().key("familiar").begin_array();
+  for (const reactive::FamiliarComponent& c : m.familiar) {
+    j.begin_object().key("polygon");
+    put(j, c.polygon);
+    j.key("lid");
+    if (c.lid) {
+      put(j, std::vector<Point>{c.lid->first, c.lid->second});
+    } else {
+      j.null();
+    }
+    j.end_object();
+  }
+  j.end_array().key("unknown");
+  put(j, m.unknown);
+  j.key("movable");
+  put(j, m.movable);
+  j.end_object();
 }
 
 const char* kind_name(reactive::Purge::Kind k) {
@@ -322,268 +422,134 @@ const char* kind_name(reactive::Purge::Kind k) {
   return "?";
 }
 
-}  // namespace
-
-int run_diffeo(const std::vector<std::string>& args) {
-  std::string scene_path, out_dir;
-  std::uint64_t seed = 1;
-  int starts = 0;
-  Robot robot = Robot::kUnicycle;
-  bool plot = true;
-  auto integer = [](const std::string& flag, const std::string& v, std::uint64_t max) {
-    if (v.empty() || v.size() > 18 || v.find_first_not_of("0123456789") != std::string::npos) {
-      throw Error(flag + " expects a non-negative integer, got '" + v + "'");
-    }
-    const std::uint64_t n = std::stoull(v);
-    if (n > max) throw Error(flag + " must be at most " + std::to_string(max));
-    return n;
-  };
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    auto value = [&]() -> const std::string& { return option_value(args, i); };
-    if (a == "--help" || a == "-h") {
-      std::fputs(kUsage, stdout);
-      return kExitOk;
-    } else if (a == "--out") {
-      out_dir = value();
-    } else if (a == "--seed") {
-      seed = integer(a, value(), std::numeric_limits<std::int64_t>::max());
-    } else if (a == "--starts") {
-      starts = static_cast<int>(integer(a, value(), 1000));
-    } else if (a == "--robot") {
-      const std::string& v = value();
-      if (v == "unicycle") {
-        robot = Robot::kUnicycle;
-      } else if (v == "holonomic") {
-        robot = Robot::kHolonomic;
-      } else {
-        throw Error("--robot expects unicycle or holonomic, got '" + v + "'");
-      }
-    } else if (a == "--no-plot") {
-      plot = false;
-    } else if (a.rfind("--", 0) == 0 || !scene_path.empty()) {
-      throw Error("unknown argument '" + a + "'\n" + kUsage);
-    } else {
-      scene_path = a;
-    }
-  }
-  if (scene_path.empty()) throw Error(std::string("missing SCENE.yaml\n") + kUsage);
-  if (out_dir.empty()) throw Error(std::string("missing --out DIR\n") + kUsage);
-
-  const SceneFile scene = read_scene_file(scene_path);
-  reactive::MappedSpace m;
-  try {
-    m = reactive::build_mapped_space(scene.semantic, scene.radius, scene.start);
-  } catch (const Error& e) {
-    throw Error(scene_path + ": " + e.what());
-  }
-  if (!reactive::in_freespace(m, scene.goal)) {
-    throw Error(scene_path + ":" + std::to_string(scene.robot_line) +
-                ": the goal is not in the robot's freespace component");
-  }
-  reactive::Diffeomorphism h;
-  try {
-    h = reactive::Diffeomorphism::build(m, scene.params);
-  } catch (const Error& e) {
-    throw Error(scene_path + ": the diffeomorphism cannot be built: " + e.what());
-  }
-
-  // Closed-loop runs: the scene's start, then the random ones.
-  std::vector<PathRun> runs;
-  runs.push_back(integrate(scene, scene.start, scene.heading, robot));
-  Rng rng(seed);
-  for (int i = 0; i < starts; ++i) {
-    const Point s = random_start(rng, m);
-    const double psi = rng.uniform(-std::numbers::pi, std::numbers::pi);
-    runs.push_back(integrate(scene, s, psi, robot));
-  }
-
-  Json j;
-  auto& o = j.raw();
-  o << "{\n";
-  j.key("scene");
-  j.str(scene_path);
-  o << ",\n";
-  j.key("seed");
-  o << seed << ",\n";
-  j.key("robot");
-  o << "{\"model\":\"" << (robot == Robot::kUnicycle ? "unicycle" : "holonomic")
-    << "\",\"radius\":";
-  j.num(scene.radius);
-  o << ",\"sensing_range\":";
-  j.num(scene.sensing_range);
-  o << ",\"start\":";
-  j.point(scene.start);
-  o << ",\"heading\":";
-  j.num(scene.heading);
-  o << ",\"goal\":";
-  j.point(scene.goal);
-  o << "},\n";
-  const auto& prm = h.params();
-  j.key("params");
-  o << "{\"p\":" << prm.p << ",\"epsilon\":";
-  j.num(prm.epsilon);
-  o << ",\"mu1\":";
-  j.num(prm.mu1);
-  o << ",\"mu2\":";
-  j.num(prm.mu2);
-  o << "},\n";
-
-  j.key("semantic");
-  o << "{\"workspace\":";
-  j.polygon(scene.semantic.workspace);
-  o << ",\n\"familiar\":";
-  j.polygons(scene.semantic.familiar);
-  o << ",\n\"unknown\":";
-  j.polygons(scene.semantic.unknown);
-  o << ",\n\"movable\":";
-  j.disks(scene.semantic.movable);
-  o << "},\n";
-
-  j.key("mapped");
-  o << "{\"radius\":";
-  j.num(m.radius);
-  o << ",\n\"enclosing\":";
-  j.polygon(m.enclosing);
-  o << ",\n\"freespace\":{\"outer\":";
-  j.polygon(m.freespace.outer);
-  o << ",\"holes\":";
-  j.polygons(m.freespace.holes);
-  o << "},\n\"familiar\":[";
-  for (std::size_t i = 0; i < m.familiar.size(); ++i) {
-    if (i) o << ",\n";
-    o << "{\"polygon\":";
-    j.polygon(m.familiar[i].polygon);
-    o << ",\"lid\":";
-    if (m.familiar[i].lid) {
-      j.points({m.familiar[i].lid->first, m.familiar[i].lid->second});
-    } else {
-      o << "null";
-    }
-    o << '}';
-  }
-  o << "],\n\"unknown\":";
-  j.polygons(m.unknown);
-  o << ",\n\"movable\":";
-  j.disks(m.movable);
-  o << "},\n";
-
-  j.key("purges");
-  o << '[';
+void put_purges(JsonWriter& j, const reactive::Diffeomorphism& h) {
+  j.key("purges").begin_array();
   for (std::size_t i = 0; i < h.purges().size(); ++i) {
     const reactive::Purge& p = h.purges()[i];
-    if (i) o << ",\n";
-    o << "{\"index\":" << i << ",\"kind\":\"" << kind_name(p.kind)
-      << "\",\"component\":" << p.component << ",\"parent\":" << p.parent
-      << ",\"depth\":" << p.depth << ",\"piece\":";
-    j.polygon(p.piece);
-    o << ",\"collar\":";
-    j.polygon(p.collar);
-    o << ",\"center\":";
-    j.point(p.center);
-    o << ",\"v0\":";
-    j.point(p.v0);
-    o << ",\"v1\":";
-    j.point(p.v1);
-    o << ",\"radius\":";
-    j.num(p.radius);
-    o << ",\"epsilon\":";
-    j.num(p.epsilon);
-    o << '}';
+    j.begin_object().key("index").value(static_cast<std::int64_t>(i));
+    j.key("kind").value(kind_name(p.kind));
+    j.key("component").value(static_cast<std::int64_t>(p.component));
+    j.key("parent").value(static_cast<std::int64_t>(p.parent));
+    j.key("depth").value(static_cast<std::int64_t>(p.depth)).key("piece");
+    put(j, p.piece);
+    j.key("collar");
+    put(j, p.collar);
+    j.key("center");
+    put(j, p.center);
+    j.key("v0");
+    put(j, p.v0);
+    j.key("v1");
+    put(j, p.v1);
+    j.key("radius").value(p.radius).key("epsilon").value(p.epsilon).end_object();
   }
-  o << "],\n";
+  j.end_array();
+}
 
-  j.key("model");
-  o << "{\"boundary\":";
-  j.polygon(h.model().boundary);
-  o << ",\n\"disks\":";
-  j.disks(h.model().disks);
-  o << ",\n\"convex\":";
-  j.polygons(h.model().convex);
-  o << ",\n\"start\":";
-  j.point(h.map(scene.start));
-  o << ",\"goal\":";
-  j.point(h.map(scene.goal));
-  o << "},\n";
+void put_model(JsonWriter& j, const Scene& s, const reactive::Diffeomorphism& h) {
+  j.key("model").begin_object().key("boundary");
+  put(j, h.model().boundary);
+  j.key("disks");
+  put(j, h.model().disks);
+  j.key("convex");
+  put(j, h.model().convex);
+  j.key("start");
+  put(j, h.map(s.start));
+  j.key("goal");
+  put(j, h.map(s.goal));
+  j.end_object();
+}
 
-  j.key("grid");
-  write_grid(j, m, h);
-  o << ",\n";
-  j.key("boundary_images");
-  write_boundary_images(j, m, h);
-  o << ",\n";
-
-  j.key("paths");
-  o << '[';
-  int reached = 0;
-  for (std::size_t i = 0; i < runs.size(); ++i) {
-    const PathRun& r = runs[i];
-    reached += r.status == "reached";
-    if (i) o << ",\n";
-    o << "{\"start\":";
-    j.point(r.start);
-    o << ",\"heading\":";
-    j.num(r.heading);
-    o << ",\"status\":";
-    j.str(r.status);
-    o << ",\"time\":";
-    j.num(r.time);
-    o << ",\"mapped\":";
-    j.points(r.mapped);
-    o << ",\"headings\":[";
-    for (std::size_t k = 0; k < r.headings.size(); ++k) {
-      if (k) o << ',';
-      j.num(r.headings[k]);
+void put_paths(JsonWriter& j, const std::vector<PathRun>& runs) {
+  j.key("paths").begin_array();
+  for (const PathRun& r : runs) {
+    j.begin_object().key("start");
+    put(j, r.start.x);
+    j.key("heading").value(r.start.psi).key("status").value(r.status);
+    j.key("time").value(r.time);
+    std::vector<Point> xs;
+    j.key("headings").begin_array();
+    for (const reactive::Pose& p : r.poses) {
+      xs.push_back(p.x);
+      j.value(p.psi);
     }
-    o << "],\"model\":";
-    j.points(r.model);
-    o << '}';
+    j.end_array().key("mapped");
+    put(j, xs);
+    j.key("model");
+    put(j, r.model);
+    j.end_object();
   }
-  o << "]\n}\n";
+  j.end_array();
+}
 
-  std::error_code ec;
-  fs::create_directories(out_dir, ec);
-  if (ec) throw Error("cannot create the output folder '" + out_dir + "': " + ec.message());
-  const fs::path json_path = fs::path(out_dir) / "diffeo.json";
-  {
-    std::ofstream f(json_path, std::ios::binary);
-    f << j.str();
-    if (!f) throw Error("cannot write '" + json_path.string() + "'");
-  }
+void report(const reactive::MappedSpace& m, const reactive::Diffeomorphism& h,
+            const std::vector<PathRun>& runs, int reached) {
   std::printf("mapped space: %zu familiar components, %zu unknown, %zu movable\n",
               m.familiar.size(), m.unknown.size(), m.movable.size());
   std::printf("purges: %zu\n", h.purges().size());
   std::printf("paths: %d/%zu reached the goal\n", reached, runs.size());
   for (std::size_t i = 0; i < runs.size(); ++i) {
-    if (runs[i].status != "reached") {
-      std::printf("  path %zu from (%g, %g): %s\n", i, runs[i].start.x(), runs[i].start.y(),
-                  runs[i].status.c_str());
-    }
+    if (runs[i].status == "reached") continue;
+    std::printf("  path %zu from (%g, %g): %s\n", i, runs[i].start.x.x(), runs[i].start.x.y(),
+                runs[i].status.c_str());
   }
-  if (j.non_finite() > 0) {
-    std::fprintf(stderr, "rearm diffeo: warning: %d non-finite numbers written as null\n",
-                 j.non_finite());
-  }
-  std::printf("wrote %s\n", json_path.string().c_str());
+}
 
-  if (plot) {
-    const std::string py = find_python({"matplotlib"});
-    const fs::path script = plot_script("diffeo.py");
-    if (py.empty()) {
-      std::fprintf(stderr,
-                   "rearm diffeo: warning: no python3 with matplotlib found; the plots were "
-                   "not drawn (the JSON is written)\n");
-    } else if (!fs::exists(script)) {
-      std::fprintf(stderr, "rearm diffeo: warning: plotting script %s not found\n",
-                   script.string().c_str());
-    } else {
-      const std::string cmd = shell_quote(py) + " " + shell_quote(script.string()) + " " +
-                              shell_quote(json_path.string()) + " " + shell_quote(out_dir);
-      if (std::system(cmd.c_str()) != 0) {
-        std::fprintf(stderr, "rearm diffeo: plotting failed: %s\n", cmd.c_str());
-        return kExitFailure;
-      }
-      std::printf("wrote %s/{semantic,mapped,model,path}.png\n", out_dir.c_str());
+}  // namespace
+
+int run_diffeo(const std::vector<std::string>& args) {
+  const DiffeoArgs a = parse_diffeo_args(args);
+  if (a.help) {
+    std::fputs(kUsage, stdout);
+    return kExitOk;
+  }
+  const scenario::Scenario sc = scenario::load_scenario(a.scenario);
+  Scene scene = scene_of(sc);
+  reactive::MappedSpace m;
+  reactive::Diffeomorphism h;
+  try {
+    reactive::validate(scene.params);
+    m = reactive::build_mapped_space(scene.semantic, scene.radius, scene.start);
+    scene.goal = goal_of(sc, a.goal, m);
+    if (!reactive::in_freespace(m, scene.goal)) {
+      throw Error("the goal is not in the robot's freespace component");
+    }
+    h = reactive::Diffeomorphism::build(m, scene.params);
+  } catch (const BudgetExceeded&) {
+    throw;
+  } catch (const Error& e) {
+    throw Error(a.scenario + ": " + e.what());
+  }
+
+  std::vector<PathRun> runs{integrate(scene, {scene.start, scene.heading}, a.robot)};
+  Rng rng(a.seed);
+  for (int i = 0; i < a.starts; ++i) {
+    const Point s = random_start(rng, m);
+    const double psi = rng.uniform(-std::numbers::pi, std::numbers::pi);
+    runs.push_back(integrate(scene, {s, psi}, a.robot));
+  }
+  int reached = 0;
+  for (const PathRun& r : runs) reached += r.status == "reached";
+
+  JsonWriter j(false, kJsonDigits);
+  j.begin_object();
+  put_header(j, a, scene, h.params());
+  put_mapped(j, m);
+  put_purges(j, h);
+  put_model(j, scene, h);
+  put_grid(j, m, h);
+  put_boundary_images(j, m, h);
+  put_paths(j, runs);
+  j.end_object();
+  const fs::path json_path = fs::path(a.out_dir) / "diffeo.json";
+  write_file_atomically(json_path.string(), j.str() + "\n");
+  report(m, h, runs, reached);
+  std::printf("wrote %s\n", json_path.string().c_str());
+  if (a.plot) {
+    const PlotOutcome drawn =
+        run_plot("diffeo", "diffeo.py", {"matplotlib"}, {json_path.string(), a.out_dir});
+    if (drawn == PlotOutcome::kFailed) return kExitFailure;
+    if (drawn == PlotOutcome::kDrawn) {
+      std::printf("wrote %s/{semantic,mapped,model,path}.png\n", a.out_dir.c_str());
     }
   }
   return reached == static_cast<int>(runs.size()) ? kExitOk : kExitFailure;

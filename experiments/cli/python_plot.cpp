@@ -1,5 +1,6 @@
 #include "python_plot.h"
 
+#include <cstdio>
 #include <cstdlib>
 
 namespace rearm::cli {
@@ -33,9 +34,39 @@ std::string find_python(const std::vector<std::string>& modules) {
 }
 
 fs::path plot_script(const std::string& name) {
-  const fs::path here = fs::path(__FILE__).parent_path().parent_path() / "plot" / name;
-  if (fs::exists(here)) return here;
-  return fs::path("experiments") / "plot" / name;
+  if (const char* dir = std::getenv("REARM_PLOT_DIR"); dir && *dir) return fs::path(dir) / name;
+  std::error_code ec;
+  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  const fs::path bin = ec ? fs::current_path(ec) : exe.parent_path();
+  return bin.parent_path() / "share" / "rearm" / "plot" / name;
+}
+
+PlotOutcome run_plot(const std::string& command, const std::string& script,
+                     const std::vector<std::string>& modules,
+                     const std::vector<std::string>& args) {
+  const std::string py = find_python(modules);
+  const fs::path path = plot_script(script);
+  if (py.empty()) {
+    std::string names;
+    for (const std::string& m : modules) names += (names.empty() ? "" : " and ") + m;
+    std::fprintf(stderr, "rearm %s: warning: no python3 with %s found; %s did not run\n",
+                 command.c_str(), names.c_str(), script.c_str());
+    return PlotOutcome::kSkipped;
+  }
+  if (!fs::exists(path)) {
+    std::fprintf(stderr,
+                 "rearm %s: warning: plotting script %s not found (set REARM_PLOT_DIR to the "
+                 "folder of the scripts)\n",
+                 command.c_str(), path.string().c_str());
+    return PlotOutcome::kSkipped;
+  }
+  std::string cmd = shell_quote(py) + " " + shell_quote(path.string());
+  for (const std::string& a : args) cmd += " " + shell_quote(a);
+  if (std::system(cmd.c_str()) != 0) {
+    std::fprintf(stderr, "rearm %s: plotting failed: %s\n", command.c_str(), cmd.c_str());
+    return PlotOutcome::kFailed;
+  }
+  return PlotOutcome::kDrawn;
 }
 
 }  // namespace rearm::cli

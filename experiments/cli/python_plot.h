@@ -1,4 +1,8 @@
-// Running the matplotlib scripts of experiments/plot from the command line.
+// Running the matplotlib scripts of experiments/plot from the command line. The scripts live
+// beside the program as an installation lays them out: <prefix>/bin/rearm and
+// <prefix>/share/rearm/plot/*.py; the build tree mirrors that layout (build/bin/rearm,
+// build/share/rearm/plot, copied at build time), so a relocated or installed rearm finds them
+// from any working directory.
 #pragma once
 
 #include <filesystem>
@@ -15,8 +19,17 @@ std::string shell_quote(const std::string& s);
 // scripts/setup.sh); "" when none does.
 std::string find_python(const std::vector<std::string>& modules);
 
-// experiments/plot/<name>, found next to this source tree, else relative to the working
-// directory.
+// The plotting script `name`: $REARM_PLOT_DIR/name when that variable is set, else
+// <directory of the running executable>/../share/rearm/plot/name.
 std::filesystem::path plot_script(const std::string& name);
+
+enum class PlotOutcome { kDrawn, kSkipped, kFailed };
+
+// Runs plotting script `script` on `args` with the first python3 that imports `modules`.
+// kSkipped, with a warning "rearm <command>: warning: ..." on stderr naming what is missing,
+// when there is no such python or no such script; kFailed, naming the command line, when the
+// script exits non-zero.
+PlotOutcome run_plot(const std::string& command, const std::string& script,
+                     const std::vector<std::string>& modules, const std::vector<std::string>& args);
 
 }  // namespace rearm::cli

@@ -123,27 +123,9 @@ void print_summary(const scenario::Scenario& s, const experiment::RunRecord& r) 
 // Draws the figure (and the animation) with experiments/plot/run.py; false when the script ran
 // and failed (a missing python or script is a warning only).
 bool draw(const fs::path& trajectory, const std::string& out_dir, bool animation) {
-  const std::string py = find_python({"matplotlib", "PIL"});
-  const fs::path script = plot_script("run.py");
-  if (py.empty()) {
-    std::fprintf(stderr,
-                 "rearm run: warning: no python3 with matplotlib and pillow found; the figure "
-                 "and the animation were not drawn (the JSON files are written)\n");
-    return true;
-  }
-  if (!fs::exists(script)) {
-    std::fprintf(stderr, "rearm run: warning: plotting script %s not found\n",
-                 script.string().c_str());
-    return true;
-  }
-  std::string cmd = shell_quote(py) + " " + shell_quote(script.string()) + " " +
-                    shell_quote(trajectory.string()) + " " + shell_quote(out_dir);
-  if (!animation) cmd += " --no-animation";
-  if (std::system(cmd.c_str()) != 0) {
-    std::fprintf(stderr, "rearm run: plotting failed: %s\n", cmd.c_str());
-    return false;
-  }
-  return true;
+  std::vector<std::string> args{trajectory.string(), out_dir};
+  if (!animation) args.push_back("--no-animation");
+  return run_plot("run", "run.py", {"matplotlib", "PIL"}, args) != PlotOutcome::kFailed;
 }
 
 }  // namespace

@@ -113,18 +113,7 @@ int run_report(const std::vector<std::string>& args) {
   const auto logs = experiment::write_ompl_logs(t, setup, (fs::path(dir) / "ompl").string());
   std::printf("wrote %zu OMPL benchmark logs to %s/ompl\n", logs.size(), dir.c_str());
   if (!plot) return kExitOk;
-  const std::string py = find_python({"matplotlib"});
-  const fs::path script = plot_script("sweep.py");
-  if (py.empty() || !fs::exists(script)) {
-    std::fprintf(stderr,
-                 "rearm sweep report: warning: no python3 with matplotlib (or no "
-                 "experiments/plot/sweep.py); tables and plots not written\n");
-    return kExitOk;
-  }
-  const std::string cmd =
-      shell_quote(py) + " " + shell_quote(script.string()) + " " + shell_quote(dir);
-  if (std::system(cmd.c_str()) != 0) {
-    std::fprintf(stderr, "rearm sweep report: plotting failed: %s\n", cmd.c_str());
+  if (run_plot("sweep report", "sweep.py", {"matplotlib"}, {dir}) == PlotOutcome::kFailed) {
     return kExitFailure;
   }
   return kExitOk;

@@ -105,11 +105,15 @@ JsonWriter& JsonWriter::key(std::string_view k) {
   return *this;
 }
 
+JsonWriter::JsonWriter(bool pretty, int digits) : pretty_(pretty), digits_(digits) {
+  REARM_DEMAND(digits >= 1 && digits <= 17, "JsonWriter: digits must be in [1, 17]");
+}
+
 JsonWriter& JsonWriter::value(double v) {
   if (!std::isfinite(v)) return null();
   before_value();
   char buf[32];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
+  std::snprintf(buf, sizeof buf, "%.*g", digits_, v);
   out_ += buf;
   return *this;
 }

@@ -1,6 +1,7 @@
 // A small streaming JSON writer for result files: keys in the order written, numbers with 17
-// significant digits (so a value reads back bit for bit and the same run writes the same bytes),
-// non-finite numbers as null, strings escaped. Optionally indented for files people read.
+// significant digits (so a value reads back bit for bit and the same run writes the same bytes;
+// fewer for drawing data, where 9 are plenty), non-finite numbers as null, strings escaped.
+// Optionally indented for files people read.
 #pragma once
 
 #include <cstdint>
@@ -12,7 +13,8 @@ namespace rearm::experiment {
 
 class JsonWriter {
  public:
-  explicit JsonWriter(bool pretty = false) : pretty_(pretty) {}
+  // digits: significant digits of every number, in [1, 17].
+  explicit JsonWriter(bool pretty = false, int digits = 17);
 
   JsonWriter& begin_object();
   JsonWriter& end_object();
@@ -35,6 +37,7 @@ class JsonWriter {
   void before_value();
   void newline();
   bool pretty_;
+  int digits_;
   std::string out_;
   struct Level {
     bool object;

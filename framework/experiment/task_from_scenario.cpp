@@ -77,6 +77,25 @@ perception::World world_of(const scenario::Scenario& s) {
   return w;
 }
 
+reactive::DiffeoParams diffeo_params(const scenario::Scenario& s) {
+  reactive::DiffeoParams d;
+  d.p = s.controller.p;
+  d.epsilon = s.controller.epsilon;
+  d.mu1 = s.controller.mu1;
+  d.mu2 = s.controller.mu2;
+  return d;
+}
+
+reactive::NavParams nav_params(const scenario::Scenario& s) {
+  reactive::NavParams n;
+  n.k_v = s.controller.k_v;
+  n.k_omega = s.controller.k_omega;
+  n.v_max = s.robot.v_max;
+  n.omega_max = s.robot.omega_max;
+  n.sensor_range = s.robot.sensor_range;
+  return n;
+}
+
 executive::Pose start_pose(const scenario::Scenario& s) {
   return executive::Pose{s.robot.start, s.robot.heading};
 }
@@ -98,15 +117,8 @@ executive::TaskSpec task_spec(const scenario::Scenario& s) {
                         : 0;
   executive::ExecutiveParams& e = t.executive;
   e.robot_radius = s.robot.radius;
-  e.diffeo.p = s.controller.p;
-  e.diffeo.epsilon = s.controller.epsilon;
-  e.diffeo.mu1 = s.controller.mu1;
-  e.diffeo.mu2 = s.controller.mu2;
-  e.nav.k_v = s.controller.k_v;
-  e.nav.k_omega = s.controller.k_omega;
-  e.nav.v_max = s.robot.v_max;
-  e.nav.omega_max = s.robot.omega_max;
-  e.nav.sensing_range = s.robot.sensor_range;
+  e.diffeo = diffeo_params(s);
+  e.nav = nav_params(s);
   e.goal_tolerance = s.controller.goal_tolerance;
   e.robust.guide = s.controller.guide;
   e.robust.convex_fallback = s.controller.convex_fallback;

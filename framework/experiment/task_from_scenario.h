@@ -18,6 +18,11 @@ void check_task(const scenario::Scenario& s);
 // simulation.max_actions.
 executive::TaskSpec task_spec(const scenario::Scenario& s);
 
+// The reactive controller's parameters of a scenario: the diffeomorphism's (p, ε, μ1, μ2) and
+// the navigation law's (gains, speed limits, sensor range R); the rest at their defaults.
+reactive::DiffeoParams diffeo_params(const scenario::Scenario& s);
+reactive::NavParams nav_params(const scenario::Scenario& s);
+
 // The kinematic plant's start pose and world for a scenario.
 executive::Pose start_pose(const scenario::Scenario& s);
 perception::World world_of(const scenario::Scenario& s);

@@ -47,10 +47,10 @@ HalfPlane bisector(const Point& y, const Point& p, double d) {
 
 }  // namespace
 
-void local_freespace(const ModelSpace& m, const Point& y, double sensing_range, Polygon& out,
+void local_freespace(const ModelSpace& m, const Point& y, double sensor_range, Polygon& out,
                      Polygon& scratch, int sides) {
   if (!y.allFinite()) throw Error("local_freespace: point y is not finite");
-  if (!std::isfinite(sensing_range) || !(sensing_range > 0)) {
+  if (!std::isfinite(sensor_range) || !(sensor_range > 0)) {
     throw Error("local_freespace: sensing range must be finite and positive");
   }
   if (sides < 3) throw Error("local_freespace: the sensing polygon needs at least 3 sides");
@@ -58,7 +58,7 @@ void local_freespace(const ModelSpace& m, const Point& y, double sensing_range, 
 
   // Start from the inscribed sensing polygon, written straight into `out`.
   out.vertices.clear();
-  const double half_range = 0.5 * sensing_range;
+  const double half_range = 0.5 * sensor_range;
   for (int i = 0; i < sides; ++i) {
     const double a = 2 * std::numbers::pi * i / sides;
     out.vertices.emplace_back(y + half_range * Point(std::cos(a), std::sin(a)));
@@ -73,7 +73,7 @@ void local_freespace(const ModelSpace& m, const Point& y, double sensing_range, 
   if (!geometry::convex_contains(m.boundary, y)) not_free("outside the model boundary");
   const geometry::Nearest wall = geometry::nearest_on_boundary(m.boundary, y);
   if (!(wall.distance > 0)) not_free("on the model boundary");
-  if (wall.distance < sensing_range) apply(bisector(y, wall.point, wall.distance));
+  if (wall.distance < sensor_range) apply(bisector(y, wall.point, wall.distance));
   for (std::size_t i = 0, n = m.boundary.size(); i < n; ++i) {
     apply(geometry::left_of(m.boundary.vertices[i], m.boundary.vertices[(i + 1) % n]));
   }
@@ -84,7 +84,7 @@ void local_freespace(const ModelSpace& m, const Point& y, double sensing_range, 
     const double dc = to_center.norm();
     const double d = dc - disk.radius;
     if (!(d > 0)) not_free("inside or on model disk " + std::to_string(i));
-    if (d >= sensing_range) continue;
+    if (d >= sensor_range) continue;
     // Nearest point of the disk: c + ρ·unit(y − c); the bisector depends only on u and d.
     apply(bisector(y, y + (d / dc) * to_center, d));
   }
@@ -97,19 +97,19 @@ void local_freespace(const ModelSpace& m, const Point& y, double sensing_range, 
     }
     const geometry::Nearest near = geometry::nearest_on_boundary(obstacle, y);
     if (!(near.distance > 0)) not_free("on convex obstacle " + std::to_string(i));
-    if (near.distance >= sensing_range) continue;
+    if (near.distance >= sensor_range) continue;
     apply(bisector(y, near.point, near.distance));
   }
 }
 
-Polygon local_freespace(const ModelSpace& m, const Point& y, double sensing_range, int sides) {
+Polygon local_freespace(const ModelSpace& m, const Point& y, double sensor_range, int sides) {
   Polygon out;
   Polygon scratch;
   if (sides >= 3) {
     out.vertices.reserve(static_cast<std::size_t>(sides) + 8);
     scratch.vertices.reserve(static_cast<std::size_t>(sides) + 8);
   }
-  local_freespace(m, y, sensing_range, out, scratch, sides);
+  local_freespace(m, y, sensor_range, out, scratch, sides);
   return out;
 }
 

@@ -35,11 +35,11 @@ inline constexpr int kSensingPolygonSides = 32;
 // than 3 vertices, or y is not strictly inside the model freespace (inside or on an obstacle,
 // outside or on the boundary).
 geometry::Polygon local_freespace(const ModelSpace& m, const geometry::Point& y,
-                                  double sensing_range, int sides = kSensingPolygonSides);
+                                  double sensor_range, int sides = kSensingPolygonSides);
 
 // The same, written into `out`, using `scratch` as the second clipping buffer: once both have
 // grown to their working size, no allocation happens (the control path).
-void local_freespace(const ModelSpace& m, const geometry::Point& y, double sensing_range,
+void local_freespace(const ModelSpace& m, const geometry::Point& y, double sensor_range,
                      geometry::Polygon& out, geometry::Polygon& scratch,
                      int sides = kSensingPolygonSides);
 

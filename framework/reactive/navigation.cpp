@@ -37,7 +37,7 @@ void check_regular(const Eigen::Matrix2d& J, const NavParams& p, const char* wha
 // u = k (Π_LF(y*) − y) in the model space.
 Point model_velocity(const ModelSpace& m, const Point& y, const Point& y_goal, const NavParams& p,
                      NavScratch& s) {
-  local_freespace(m, y, p.sensing_range, s.lf, s.work, p.sensing_sides);
+  local_freespace(m, y, p.sensor_range, s.lf, s.work, p.sensing_sides);
   return p.k * (geometry::project_onto_convex(s.lf, y_goal) - y);
 }
 
@@ -59,7 +59,7 @@ void validate(const NavParams& p) {
   positive(p.k_omega, "k_omega");
   positive(p.v_max, "v_max");
   positive(p.omega_max, "omega_max");
-  positive(p.sensing_range, "sensing_range");
+  positive(p.sensor_range, "sensor_range");
   if (p.sensing_sides < 3) throw Error("NavParams: sensing_sides must be at least 3");
   if (!std::isfinite(p.singular_tolerance) || p.singular_tolerance < 0) {
     throw Error("NavParams: singular_tolerance must be finite and non-negative");
@@ -105,7 +105,7 @@ Twist unicycle_command(const ModelSpace& m, const DiffeoEval& at_x, double psi, 
   const Point e_perp(-e_xi.y(), e_xi.x());
   const Point& y = at_x.h;
 
-  local_freespace(m, y, p.sensing_range, s.lf, s.work, p.sensing_sides);
+  local_freespace(m, y, p.sensor_range, s.lf, s.work, p.sensing_sides);
   // Linear target: the goal projected on the chord LF ∩ {y + τ e_ξ} (y is inside LF, so the
   // chord contains τ = 0; a numerically missed line leaves the robot still).
   const std::optional<geometry::Interval> chord = geometry::line_interval(s.lf, y, e_xi);

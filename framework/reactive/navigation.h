@@ -27,7 +27,7 @@ struct NavParams {
   double k_omega = 1.0;        // unicycle angular gain (1/s)
   double v_max = 0.4;          // linear speed limit (m/s), also the fully actuated norm limit
   double omega_max = 1.0;      // turn-rate limit (rad/s)
-  double sensing_range = 3.0;  // R (m): LF is clipped to B(y, R/2)
+  double sensor_range = 3.0;  // R (m): LF is clipped to B(y, R/2)
   int sensing_sides = kSensingPolygonSides;  // sides of the polygon inscribed in B(y, R/2)
   // Dh counts as singular when |det Dh| <= singular_tolerance · ‖Dh‖_F² (scale-free; h is a
   // diffeomorphism away from sharp corners, so this only fires at or next to a corner).

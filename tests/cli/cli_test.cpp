@@ -297,7 +297,7 @@ bool have_python_modules(const std::string& imports) {
 TEST(CliTest, DiffeoWritesTheJsonAndThePlots) {
   const std::string dir = temp_dir();
   const Result r =
-      run("diffeo experiments/scenes/diffeo_demo.yaml --out " + dir + " --starts 2 --seed 5");
+      run("diffeo experiments/scenarios/diffeo_demo.yaml --out " + dir + " --starts 2 --seed 5");
   ASSERT_EQ(r.code, 0) << r.out;
   EXPECT_TRUE(contains(r.out, "paths: 3/3 reached the goal")) << r.out;
   const std::string json = slurp(dir + "/diffeo.json");
@@ -319,7 +319,7 @@ TEST(CliTest, DiffeoWritesTheJsonAndThePlots) {
 
   const std::string dir2 = temp_dir();
   const Result h =
-      run("diffeo experiments/scenes/diffeo_simple.yaml --robot holonomic --no-plot "
+      run("diffeo experiments/scenarios/diffeo_simple.yaml --robot holonomic --no-plot "
           "--out " +
           dir2);
   ASSERT_EQ(h.code, 0) << h.out;
@@ -335,7 +335,7 @@ TEST(CliTest, DiffeoUsage) {
   EXPECT_EQ(help.code, 0);
   EXPECT_TRUE(contains(help.out, "--robot")) << help.out;
   EXPECT_TRUE(contains(run("--help").out, "diffeo"));
-  const std::string scene = " experiments/scenes/diffeo_simple.yaml";
+  const std::string scene = " experiments/scenarios/diffeo_simple.yaml";
   const Result no_out = run("diffeo" + scene);
   EXPECT_EQ(no_out.code, 2);
   EXPECT_TRUE(contains(no_out.out, "missing --out")) << no_out.out;
@@ -350,37 +350,38 @@ TEST(CliTest, DiffeoUsage) {
 
 TEST(CliTest, DiffeoRejectsBadScenesNamingTheProblem) {
   const std::string dir = temp_dir();
-  const std::string ws = "workspace: [[0,0],[10,0],[10,10],[0,10]]\n";
-  const std::string robot = "robot: {radius: 0.2, start: [1,1], goal: [9,9]}\n";
+  // A valid scenario (diffeo_simple's room, l1 in the far corner), edited line by line.
+  const std::string ws = "name: b\nworkspace: [[0,0],[10,0],[10,10],[0,10]]\n";
+  const std::string robot = "robot: {radius: 0.2, start: [1,1]}\n";
+  const std::string rest =
+      "regions:\n  - {name: l1, polygon: [[8.5,8.5],[9.5,8.5],[9.5,9.5],[8.5,9.5]]}\n"
+      "task: \"<>move(l1)\"\n";
   struct Case {
-    std::string text;
-    std::string message;  // expected in the output, after "bad.yaml:"
+    std::string text, extra, message;  // message: expected in the output
   };
   const Case cases[] = {
-      {ws, "bad.yaml:1: missing the required key 'robot'"},
-      {ws + "robot: {radius: 0.2, start: [1,1]}\n", "bad.yaml:2: robot is missing the key 'goal'"},
-      {ws + "robot: {radius: 0.2, start: [nan,1], goal: [9,9]}\n",
-       "bad.yaml:2: non-finite number 'nan'"},
-      {ws + robot + "familiar:\n  - [[2,2],[3,3],[3,2],[2,3]]\n",
-       "bad.yaml:4: familiar obstacle 1: not simple"},
-      {ws + robot + "colour: 3\n", "bad.yaml:3: unknown key 'colour'"},
-      {ws + "robot: {radius: 0.2, start: [1,1], goal: [9,9], speed: 2}\n",
-       "bad.yaml:2: unknown key 'speed' in robot"},
-      {ws + "robot: {radius: 0.2, start: [4,4], goal: [9,9]}\nfamiliar:\n"
-            "  - [[3,3],[6,3],[6,4],[4,4.5],[4,6],[3,6]]\n",
-       "robot start (4, 4) is inside familiar obstacle 1 (line 4)"},
-      {ws + robot + "unknown:\n  - [[3,3],[6,3],[6,4],[4,4],[4,6],[3,6]]\n",
-       "bad.yaml:4: unknown obstacle 1 is not convex"},
-      {ws + robot + "params: {p: 3}\n", "bad.yaml:3: diffeomorphism parameter p"},
-      {ws + robot + "movable:\n  - {center: [5,5], radius: 1e999}\n",
-       "bad.yaml:4: non-finite number '1e999'"},
-      {ws + robot + "familiar: [[[2,2],[3,2],[3,3]]\n", "bad.yaml:3: unterminated list"},
-      {ws + ws + robot, "bad.yaml:2: duplicate key 'workspace'"},
+      {ws + rest, "", "bad.yaml: robot: required key is missing"},
+      {ws + "robot: {radius: 0.2, start: [nan,1]}\n" + rest, "",
+       "robot.start[0]: must be a finite number, got 'nan' (line 3)"},
+      {ws + robot + rest +
+           "familiar:\n  - {name: P1, polygon: [[0.5,0.5],[2,0.5],[2,2],[0.5,2]]}\n",
+       "", "robot.start: the robot's start disk (radius 0.2) overlaps familiar obstacle 'P1'"},
+      {ws + robot + rest +
+           "unknown:\n  - {name: C1, polygon: [[3,3],[6,3],[6,4],[4,4],[4,6],[3,6]]}\n",
+       "", "unknown[0].polygon: unknown obstacles must be convex"},
+      {ws + robot + rest + "controller: {p: 3}\n", "", "controller.p: must be an even integer"},
+      {ws + robot + rest + "colour: 3\n", "", "colour: unknown key"},
+      // The goal: the only region covered by an obstacle, an unknown name, a point outside F.
+      {ws + robot + rest + "familiar:\n  - {name: P1, polygon: [[7,7],[10,7],[10,10],[7,10]]}\n",
+       "", "no region has a point in the robot's freespace component"},
+      {ws + robot + rest, " --goal l7", "--goal: 'l7' is neither a region of the scenario"},
+      {ws + robot + rest, " --goal 1e300,5", "the goal is not in the robot's freespace component"},
+      {ws + robot + rest, " --goal 1,nan", "--goal expects a decimal number, got 'nan'"},
   };
   for (const Case& c : cases) {
     const std::string file = dir + "/bad.yaml";
     std::ofstream(file) << c.text;
-    const Result r = run("diffeo " + file + " --no-plot --out " + dir + "/out");
+    const Result r = run("diffeo " + file + c.extra + " --no-plot --out " + dir + "/out");
     EXPECT_EQ(r.code, 2) << c.text << r.out;
     EXPECT_TRUE(contains(r.out, c.message)) << c.text << "\n--- got:\n" << r.out;
   }

@@ -43,7 +43,7 @@ ReactiveScene scene(int i) {
   o.round_unknown = true;  // [7]'s unknown obstacles satisfy the curvature condition
   o.movable = 1;
   o.margin = 0.8;
-  o.sensing_range = kSensingRange;
+  o.sensor_range = kSensingRange;
   o.goal_clearance = 0.6;  // room for the robot–object pair (r + ρ_i) at the goal
   o.boundary_touching = i == 0 ? 1 : 0;
   o.workspace_shape =
@@ -90,7 +90,7 @@ void run_starts(const ReactiveScene& s, RobotModel model, double carried, Tally*
   const perception::World world = world_of(s);
   const double r = s.robot_radius;
   NavParams nav;
-  nav.sensing_range = kSensingRange;
+  nav.sensor_range = kSensingRange;
   Rng rng = Rng::derive(77, static_cast<std::uint64_t>(model) * 10 + (carried > 0));
   const int starts = static_cast<int>(test_support::scaled(200, 4));
   for (int k = 0; k < starts; ++k) {

@@ -120,7 +120,7 @@ NavParams unlimited() {
 
 // The model-space target of the fully actuated law, from the parts tested elsewhere.
 Point model_field(const ModelSpace& m, const Point& y, const Point& goal, const NavParams& p) {
-  const Polygon lf = local_freespace(m, y, p.sensing_range, p.sensing_sides);
+  const Polygon lf = local_freespace(m, y, p.sensor_range, p.sensing_sides);
   return p.k * (geometry::project_onto_convex(lf, goal) - y);
 }
 
@@ -243,7 +243,7 @@ TEST(Unicycle, CommandRealizesTheModelSpaceTargets) {
     const Twist u = unicycle_command(m, at, q.psi, goal, p);
     ASSERT_TRUE(std::isfinite(u.v) && std::isfinite(u.omega));
     // Targets, recomputed here.
-    const Polygon lf = local_freespace(m, at.h, p.sensing_range);
+    const Polygon lf = local_freespace(m, at.h, p.sensor_range);
     const Point e = at.J * Point(std::cos(q.psi), std::sin(q.psi));
     const Point ex = e.normalized();
     const auto chord = geometry::line_interval(lf, at.h, ex);
@@ -408,7 +408,7 @@ TEST(Navigation, RejectsBadInput) {
   outside.h = Point(6, 0);
   EXPECT_THROW(unicycle_command(m, outside, 0, Point(1, 1), p), Error);
   for (auto field : {&NavParams::k, &NavParams::k_v, &NavParams::k_omega, &NavParams::v_max,
-                     &NavParams::omega_max, &NavParams::sensing_range}) {
+                     &NavParams::omega_max, &NavParams::sensor_range}) {
     NavParams q;
     q.*field = 0;
     EXPECT_THROW(validate(q), Error);

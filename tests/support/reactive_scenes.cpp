@@ -83,7 +83,7 @@ void check_options(const SceneOptions& o) {
   };
   positive(o.workspace_size, "workspace_size");
   positive(o.robot_radius, "robot_radius");
-  positive(o.sensing_range, "sensing_range");
+  positive(o.sensor_range, "sensor_range");
   positive(o.familiar_min_size, "familiar_min_size");
   positive(o.thickness_fraction_min, "thickness_fraction_min");
   positive(o.unknown_min_radius, "unknown_min_radius");
@@ -260,7 +260,7 @@ ReactiveScene random_scene_once(Rng& rng, const SceneOptions& o) {
   ReactiveScene scene;
   scene.workspace = make_workspace(o.workspace_shape, o.workspace_size);
   scene.robot_radius = o.robot_radius;
-  scene.sensing_range = o.sensing_range;
+  scene.sensor_range = o.sensor_range;
   const Polygon& W = scene.workspace;
   const RegionSet W_set = geometry::to_set(W);
   const Eigen::AlignedBox2d box = bounds(W);
@@ -470,7 +470,7 @@ ReactiveScene benchmark_scene(int K, std::uint64_t seed) {
   ReactiveScene scene;
   scene.workspace = make_workspace(WorkspaceShape::kSquare, 20.0);
   scene.robot_radius = 0.2;
-  scene.sensing_range = 5.0;
+  scene.sensor_range = 5.0;
   scene.goal = Point(18.8, 18.8);
   std::vector<int> cells(kCols * kRows);
   for (int i = 0; i < kCols * kRows; ++i) cells[i] = i;

@@ -30,7 +30,7 @@ struct ReactiveScene {
   std::vector<geometry::Polygon> unknown;   // undilated, convex
   std::vector<geometry::Disk> movable;      // undilated object disks
   double robot_radius = 0.2;
-  double sensing_range = 5.0;
+  double sensor_range = 5.0;
   geometry::Point goal = geometry::Point::Zero();  // free, with SceneOptions::goal_clearance
 };
 
@@ -68,7 +68,7 @@ struct SceneOptions {
   int unknown = 2;   // number of unknown convex obstacles
   int movable = 0;   // number of movable disks
   double robot_radius = 0.2;
-  double sensing_range = 5.0;
+  double sensor_range = 5.0;
   // Separation of the dilated obstacles from each other and from the eroded workspace
   // boundary (m). 2·ε with the default collar width ε = 1 leaves room for both collars.
   double margin = 2.0;
