@@ -6,38 +6,11 @@
 
 #include "baselines/plan.h"
 #include "core/error.h"
-#include "executive/region.h"
+#include "experiment/goals.h"
 #include "experiment/task_from_scenario.h"
-#include "ltl/parser.h"
 #include "scenario/scenario_io.h"
-#include "symbolic/action.h"
 
 namespace rearm::baselines {
-
-namespace {
-
-// Collects the action atoms of a reachability formula built of atoms, && and <> (the nesting
-// of formula (1) of the paper); anything else cannot be planned by a rearrangement planner.
-void collect_atoms(const ltl::Formula& f, std::vector<std::string>& atoms) {
-  switch (f.op()) {
-    case ltl::Op::Ap:
-      atoms.push_back(f.name());
-      return;
-    case ltl::Op::True:
-      return;
-    case ltl::Op::And:
-    case ltl::Op::Eventually:
-      for (const auto& c : f.children()) collect_atoms(c, atoms);
-      return;
-    default:
-      throw Error(
-          "the baselines plan reachability tasks only (action atoms joined by && and <>); "
-          "found '" +
-          f.to_string(ltl::Syntax::Spin) + "'");
-  }
-}
-
-}  // namespace
 
 Arrangement RearrangementProblem::goal_arrangement() const {
   Arrangement a = start;
@@ -54,7 +27,6 @@ bool RearrangementProblem::goals_reached(const Arrangement& a) const {
 }
 
 RearrangementProblem problem_from_scenario(const scenario::Scenario& s) {
-  const std::string source = s.source.empty() ? s.name : s.source;
   experiment::check_task(s);  // parses, names only the scenario's objects and regions
   RearrangementProblem p;
   p.name = s.name;
@@ -83,56 +55,19 @@ RearrangementProblem problem_from_scenario(const scenario::Scenario& s) {
   p.goal_regions.assign(n, std::nullopt);
   p.goal_region_names.assign(n, "");
 
-  auto region = [&](const std::string& name) -> const scenario::NamedPolygon& {
-    for (const auto& r : s.regions)
-      if (r.name == name) return r;
-    throw scenario::ScenarioError(source, "task", "unknown region '" + name + "'");
-  };
-  auto object = [&](const std::string& name) {
-    for (std::size_t i = 0; i < n; ++i)
-      if (p.object_names[i] == name) return i;
-    throw scenario::ScenarioError(source, "task", "unknown object '" + name + "'");
-  };
-
-  std::vector<std::string> atoms;
-  try {
-    collect_atoms(ltl::parse(s.task), atoms);
-  } catch (const scenario::ScenarioError&) {
-    throw;
-  } catch (const Error& e) {
-    throw scenario::ScenarioError(source, "task", e.what());
+  const experiment::ReachabilityGoals g = experiment::reachability_goals(s);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!g.object_region[i]) continue;
+    const scenario::NamedPolygon& r = s.regions[*g.object_region[i]];
+    p.goals[i] = g.object_target[i];
+    p.goal_regions[i] = r.polygon;
+    p.goal_region_names[i] = r.name;
   }
-  for (const auto& text : atoms) {
-    symbolic::Action a;
-    try {
-      a = symbolic::Action::parse(text);
-    } catch (const Error& e) {
-      throw scenario::ScenarioError(source, "task", e.what());
-    }
-    if (a.kind == symbolic::ActionKind::Release) {
-      const std::size_t i = object(a.object);
-      const auto& r = region(a.region);
-      if (p.goals[i] && p.goal_region_names[i] != r.name)
-        throw scenario::ScenarioError(source, "task",
-                                      "object '" + a.object + "' is released in two regions ('" +
-                                          p.goal_region_names[i] + "' and '" + r.name +
-                                          "'); a rearrangement has one goal per object");
-      p.goals[i] = executive::region_target({r.name, r.polygon});
-      p.goal_regions[i] = r.polygon;
-      p.goal_region_names[i] = r.name;
-    } else if (a.kind == symbolic::ActionKind::Move) {
-      const auto& r = region(a.region);
-      if (p.robot_goal && p.robot_goal_name != r.name)
-        throw scenario::ScenarioError(source, "task",
-                                      "the robot is sent to two regions ('" + p.robot_goal_name +
-                                          "' and '" + r.name +
-                                          "'); a rearrangement has one final robot region");
-      p.robot_goal = executive::region_target({r.name, r.polygon});
-      p.robot_goal_region = r.polygon;
-      p.robot_goal_name = r.name;
-    } else {
-      object(a.object);  // grasp(M): implied by release(M, l); checks the name
-    }
+  if (g.robot_region) {
+    const scenario::NamedPolygon& r = s.regions[*g.robot_region];
+    p.robot_goal = g.robot_target;
+    p.robot_goal_region = r.polygon;
+    p.robot_goal_name = r.name;
   }
   return p;
 }

@@ -7,11 +7,10 @@
 #include "core/error.h"
 #include "core/rng.h"
 #include "experiment/json_writer.h"
+#include "experiment/known_obstacles.h"
 #include "experiment/run_scenario.h"
 #include "experiment/task_from_scenario.h"
 #include "experiment/trial_columns.h"
-#include "perception/semantic_map.h"
-#include "perception/sensor.h"
 #include "sim/sim_config.h"
 #include "sim/sim_world.h"
 
@@ -110,14 +109,6 @@ void run_offline(const scenario::Scenario& s, const RearrangementProblem& p,
   set_status_from_execution(r, p);
 }
 
-// The obstacles the sensor has revealed so far: localized familiar obstacles whole and the
-// visible fragments of unknown ones.
-std::vector<geometry::Polygon> known_obstacles(const perception::SemanticMap& map) {
-  std::vector<geometry::Polygon> out = map.familiar();
-  out.insert(out.end(), map.unknown().begin(), map.unknown().end());
-  return out;
-}
-
 // Does a newly known obstacle meet what remains of the plan?
 bool plan_invalidated(const std::vector<PlanExecutor::Sweep>& rest, const DiskWorld& known) {
   for (const auto& sw : rest) {
@@ -170,7 +161,7 @@ bool continue_transfer(const RearrangementProblem& full, std::size_t i, const Ob
 // true when a new obstacle invalidated it in a transit or a transfer (a dock or back-off runs to
 // its end, at most a few cm), which is then interrupted (`current_move`: the move it was in).
 bool execute_until_invalidated(PlanExecutor& exec, sim::SimWorld& world,
-                               perception::SemanticMap& map, const geometry::Polygon& workspace,
+                               experiment::KnownObstacles& map, const geometry::Polygon& workspace,
                                const Plan& plan, std::optional<ObjectMove>& current_move) {
   exec.load(plan);
   bool pending = false;
@@ -178,7 +169,7 @@ bool execute_until_invalidated(PlanExecutor& exec, sim::SimWorld& world,
     const bool changed = map.update(world.pose().x);
     if (!changed && !pending) continue;
     const auto rest = exec.remaining();
-    if (rest.empty() || !plan_invalidated(rest, DiskWorld(workspace, known_obstacles(map)))) {
+    if (rest.empty() || !plan_invalidated(rest, DiskWorld(workspace, map.polygons()))) {
       pending = false;
       continue;
     }
@@ -200,10 +191,7 @@ void run_replanning(const scenario::Scenario& s, const RearrangementProblem& ful
                     const BaselineOptions& o, BaselineRecord& r) {
   sim::SimWorld world(s, sim::config_for(s));
   PlanExecutor exec(world, full, o.params, execution_options(s, o));
-  perception::SemanticMap map(
-      experiment::world_of(s), perception::Sensor(perception::SensorParams{s.robot.sensor_range}),
-      perception::ChangeTolerances{s.controller.fragment_tolerance,
-                                   perception::ChangeTolerances{}.object_move});
+  experiment::KnownObstacles map(s);
   map.update(world.pose().x);
   r.executed = true;
   // A held object's interrupted move: its target and region, for the continuation.
@@ -217,7 +205,7 @@ void run_replanning(const scenario::Scenario& s, const RearrangementProblem& ful
       break;
     }
     RearrangementProblem sub = full;
-    sub.obstacles = known_obstacles(map);
+    sub.obstacles = map.polygons();
     sub.obstacle_names.clear();
     for (std::size_t i = 0; i < full.object_count(); ++i) sub.start[i] = world.object_center(i);
     const sim::Pose pose = world.pose();

@@ -7,12 +7,18 @@ cd "$(dirname "$0")/.."
 bash scripts/setup.sh
 # The text's house checks: every cited docs/ file exists, no issue numbers in comments.
 bash scripts/check_docs.sh
+# The layering of docs/architecture.md: no include a module may not make, third-party headers
+# in their modules' .cpp files.
+python3 scripts/check_layering.py
 JOBS=$(nproc)
 BUILD=${BUILD:-build}
 cmake -S . -B "$BUILD" -DCMAKE_BUILD_TYPE=Release -DREARM_WERROR=ON -DREARM_SANITIZE=OFF \
   -DREARM_BUILD_TESTS=ON -DREARM_BUILD_BENCH=ON -DREARM_TESTS=
 cmake --build "$BUILD" -j"$JOBS"
 ctest --test-dir "$BUILD" --no-tests=error --output-on-failure -j"$JOBS"
+# The package: cmake --install to a fresh prefix, examples/downstream built against it with
+# find_package(rearm) and run, and the installed rearm run from another directory draws run.png.
+bash scripts/check_install.sh "$BUILD"
 
 # The Slurm recipe on a real single-node Slurm (slurm-wlm and munge, started and stopped by the
 # script): the smoke sweep as a 3-task job array, merged, equal row for row to the unsharded
