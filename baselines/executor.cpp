@@ -334,6 +334,69 @@ struct PlanExecutor::Impl {
     return Outcome::kCommand;
   }
 
+  // Phase::kStartMove: the next move's first phase (or the final transit); false when the plan
+  // ended (completed, or failed with its reason).
+  bool start_move() {
+    if (move >= plan.moves.size()) {
+      if (world.held()) {
+        fail("the plan ends with " + name(*world.held()) + " held");
+        return false;
+      }
+      if (plan.final_transit.empty()) {
+        end(ExecStatus::kCompleted, "", "succeeded");
+        return false;
+      }
+      open(problem.robot_goal ? "move(" + problem.robot_goal_name + ")" : "move");
+      if (start_polyline(plan.final_transit, "the final transit") == Outcome::kFailed) {
+        return false;
+      }
+      phase = Phase::kFinalTransit;
+      return true;
+    }
+    const ObjectMove& m = current();
+    const std::optional<std::size_t> held = world.held();
+    if (m.held_at_start) {
+      if (held != m.object) {
+        fail(what() + " starts holding " + name(m.object) + " but the robot holds " +
+             (held ? name(*held) : std::string("nothing")));
+        return false;
+      }
+      open_release();
+      if (start_transfer() == Outcome::kFailed) return false;
+      phase = Phase::kTransfer;
+      return true;
+    }
+    if (held) {
+      fail(what() + " starts with a transit but the robot holds " + name(*held));
+      return false;
+    }
+    open("grasp(" + name(m.object) + ")");
+    if (start_polyline(m.transit, what() + ": the transit") == Outcome::kFailed) return false;
+    phase = Phase::kTransit;
+    return true;
+  }
+
+  // Phase::kDock: drives to the object, then grips it and starts the transfer (kArrived, the
+  // phase now kTransfer); kCommand while docking; kFailed with the reason.
+  Outcome dock(Command& c) {
+    const Outcome o = drive(what() + ": dock", c);
+    if (o != Outcome::kArrived) return o;
+    const std::size_t i = current().object;
+    if (!world.grip(i)) {
+      const sim::Pose p = world.pose();
+      const Point rel = world.object_center(i) - p.x;
+      fail("grip of " + name(i) + " failed: gap " + str(rel.norm() - r() - rho(i)) +
+           " m, bearing " + str(wrap(std::atan2(rel.y(), rel.x()) - p.psi)) +
+           " rad from the heading");
+      return Outcome::kFailed;
+    }
+    close("succeeded");
+    open_release();
+    if (start_transfer() == Outcome::kFailed) return Outcome::kFailed;
+    phase = Phase::kTransfer;
+    return Outcome::kArrived;
+  }
+
   // --- the phase machine: advances through instantaneous phase changes (grip, release) until a
   // command is due; nullopt when the plan ended. ---
   std::optional<Command> next_command() {
@@ -343,47 +406,9 @@ struct PlanExecutor::Impl {
         case Phase::kIdle:
           return std::nullopt;
 
-        case Phase::kStartMove: {
-          if (move >= plan.moves.size()) {
-            if (world.held()) {
-              fail("the plan ends with " + name(*world.held()) + " held");
-              return std::nullopt;
-            }
-            if (plan.final_transit.empty()) {
-              end(ExecStatus::kCompleted, "", "succeeded");
-              return std::nullopt;
-            }
-            open(problem.robot_goal ? "move(" + problem.robot_goal_name + ")" : "move");
-            if (start_polyline(plan.final_transit, "the final transit") == Outcome::kFailed) {
-              return std::nullopt;
-            }
-            phase = Phase::kFinalTransit;
-            continue;
-          }
-          const ObjectMove& m = current();
-          const std::optional<std::size_t> held = world.held();
-          if (m.held_at_start) {
-            if (held != m.object) {
-              fail(what() + " starts holding " + name(m.object) + " but the robot holds " +
-                   (held ? name(*held) : std::string("nothing")));
-              return std::nullopt;
-            }
-            open_release();
-            if (start_transfer() == Outcome::kFailed) return std::nullopt;
-            phase = Phase::kTransfer;
-            continue;
-          }
-          if (held) {
-            fail(what() + " starts with a transit but the robot holds " + name(*held));
-            return std::nullopt;
-          }
-          open("grasp(" + name(m.object) + ")");
-          if (start_polyline(m.transit, what() + ": the transit") == Outcome::kFailed) {
-            return std::nullopt;
-          }
-          phase = Phase::kTransit;
+        case Phase::kStartMove:
+          if (!start_move()) return std::nullopt;
           continue;
-        }
 
         case Phase::kTransit: {
           const Outcome o = follow_polyline(what() + ": transit", c);
@@ -402,22 +427,9 @@ struct PlanExecutor::Impl {
         }
 
         case Phase::kDock: {
-          const Outcome o = drive(what() + ": dock", c);
+          const Outcome o = dock(c);
           if (o == Outcome::kCommand) return c;
           if (o == Outcome::kFailed) return std::nullopt;
-          const std::size_t i = current().object;
-          if (!world.grip(i)) {
-            const sim::Pose p = world.pose();
-            const Point rel = world.object_center(i) - p.x;
-            fail("grip of " + name(i) + " failed: gap " + str(rel.norm() - r() - rho(i)) +
-                 " m, bearing " + str(wrap(std::atan2(rel.y(), rel.x()) - p.psi)) +
-                 " rad from the heading");
-            return std::nullopt;
-          }
-          close("succeeded");
-          open_release();
-          if (start_transfer() == Outcome::kFailed) return std::nullopt;
-          phase = Phase::kTransfer;
           continue;
         }
 

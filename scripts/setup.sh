@@ -12,8 +12,9 @@ PACKAGES=(
   libtbb-dev libbenchmark-dev libgtest-dev libgmock-dev libyaml-cpp-dev libmimalloc-dev
   # independent LTL translator used by the tests; plotting
   spin python3-matplotlib python3-pil
-  # the fuzz targets (tests/fuzz): clang with its sanitizer and libFuzzer runtimes
-  clang libclang-rt-14-dev
+  # the fuzz targets (tests/fuzz): clang with its sanitizer and libFuzzer runtimes; the code
+  # checks of scripts/check_style.sh (clang-format, universal ctags for function lengths)
+  clang libclang-rt-14-dev clang-format universal-ctags
   # ompl_benchmark_statistics (the sweep's OMPL benchmark logs into SQLite, tested); the
   # sweep's cluster recipes: a single-node Slurm (experiments/slurm) and GNU parallel
   ompl-demos slurm-wlm munge parallel

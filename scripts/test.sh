@@ -10,6 +10,8 @@ bash scripts/check_docs.sh
 # The layering of docs/architecture.md: no include a module may not make, third-party headers
 # in their modules' .cpp files.
 python3 scripts/check_layering.py
+# Every C++ file clang-formatted; no function of the library over 100 lines.
+bash scripts/check_style.sh
 JOBS=$(nproc)
 BUILD=${BUILD:-build}
 cmake -S . -B "$BUILD" -DCMAKE_BUILD_TYPE=Release -DREARM_WERROR=ON -DREARM_SANITIZE=OFF \

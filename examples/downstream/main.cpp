@@ -22,8 +22,7 @@ int main(int argc, char** argv) {
     const rearm::experiment::RunRecord r = rearm::experiment::run_scenario(s);
     const rearm::executive::TaskResult& t = r.result;
     std::printf("%s: %s (%s), %.2f s simulated, %d collisions\n", s.name.c_str(),
-                rearm::executive::to_string(t.status), t.reason.c_str(), t.sim_time,
-                t.collisions);
+                rearm::executive::to_string(t.status), t.reason.c_str(), t.sim_time, t.collisions);
     return t.status == rearm::executive::TaskStatus::kCompleted && t.collisions == 0 ? 0 : 1;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "downstream: %s\n", e.what());

@@ -22,11 +22,11 @@ namespace rearm::reactive {
 // Gains, command limits and tolerances of the navigation laws. The defaults are rearm's
 // choices (reactive.md leaves them open), sized for a ~0.2 m robot in a 10–20 m workspace.
 struct NavParams {
-  double k = 1.0;              // fully actuated gain (1/s): u = k (Π_LF(y*) − y)
-  double k_v = 1.0;            // unicycle linear gain (1/s)
-  double k_omega = 1.0;        // unicycle angular gain (1/s)
-  double v_max = 0.4;          // linear speed limit (m/s), also the fully actuated norm limit
-  double omega_max = 1.0;      // turn-rate limit (rad/s)
+  double k = 1.0;             // fully actuated gain (1/s): u = k (Π_LF(y*) − y)
+  double k_v = 1.0;           // unicycle linear gain (1/s)
+  double k_omega = 1.0;       // unicycle angular gain (1/s)
+  double v_max = 0.4;         // linear speed limit (m/s), also the fully actuated norm limit
+  double omega_max = 1.0;     // turn-rate limit (rad/s)
   double sensor_range = 3.0;  // R (m): LF is clipped to B(y, R/2)
   int sensing_sides = kSensingPolygonSides;  // sides of the polygon inscribed in B(y, R/2)
   // Dh counts as singular when |det Dh| <= singular_tolerance · ‖Dh‖_F² (scale-free; h is a

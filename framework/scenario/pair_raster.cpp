@@ -111,8 +111,8 @@ bool PairRaster::connects(int source, const std::vector<std::vector<int>>& targe
     stack_.pop_back();
     visit(k);
     const int ix = k % nx_, iy = k / nx_;
-    const int next[4] = {ix > 0 ? k - 1 : -1, ix + 1 < nx_ ? k + 1 : -1,
-                         iy > 0 ? k - nx_ : -1, iy + 1 < ny_ ? k + nx_ : -1};
+    const int next[4] = {ix > 0 ? k - 1 : -1, ix + 1 < nx_ ? k + 1 : -1, iy > 0 ? k - nx_ : -1,
+                         iy + 1 < ny_ ? k + nx_ : -1};
     for (const int n : next) {
       if (n < 0 || blocked_[static_cast<std::size_t>(n)] != 0 ||
           seen_[static_cast<std::size_t>(n)] == blocked_mark) {

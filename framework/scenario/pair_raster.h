@@ -28,7 +28,9 @@ class PairRaster {
   double margin() const { return margin_; }
   // The cell holding p, or -1 when p lies outside the raster.
   int cell_of(const geometry::Point& p) const;
-  bool is_free(int cell) const { return cell >= 0 && blocked_[static_cast<std::size_t>(cell)] == 0; }
+  bool is_free(int cell) const {
+    return cell >= 0 && blocked_[static_cast<std::size_t>(cell)] == 0;
+  }
   // Free cells whose centre is closer than clearance + m to the polygon (or inside it).
   std::vector<int> newly_blocked(const geometry::Polygon& p) const;
   void block(const std::vector<int>& cells);

@@ -58,11 +58,11 @@
 //
 // Sealed pocket: a C-shaped familiar polygon (wall thickness kWallThickness) around an interior
 // square of side 2·max(cg, s/√2 + slack, w/2 + kMinStub), mouth of width w in the front wall; the
-// goal point of M1 is the interior's centre; B1 (radius ρ) stands on the mouth's axis kBlockerSetback
-// outside it, so the pair (and the robot alone) cannot pass on either side of it, and the pair
-// can once B1 is moved. Other starts, goals, the parking spot and the robot keep out of the
-// pocket's box grown by cg (by robot clearance for the robot) and >= 2ρ + 2R + kDenseRegionGap
-// from B1, so that no object stands in the mouth's approach.
+// goal point of M1 is the interior's centre; B1 (radius ρ) stands on the mouth's axis
+// kBlockerSetback outside it, so the pair (and the robot alone) cannot pass on either side of it,
+// and the pair can once B1 is moved. Other starts, goals, the parking spot and the robot keep out
+// of the pocket's box grown by cg (by robot clearance for the robot) and >= 2ρ + 2R +
+// kDenseRegionGap from B1, so that no object stands in the mouth's approach.
 //
 // Reached densities (GeneratedInstance::achieved_density: the exact area of the obstacles'
 // union, overlaps counted once, over the workspace area; default radii and max_obstacle_side,
@@ -130,35 +130,35 @@ struct InstanceSpec {
   // Objects' total disk area / workspace area; 0: use width and height; in (0, 0.3]: the
   // workspace is the square of side sqrt(area / footprint_density) (<= 100 m).
   double footprint_density = 0;
-  double robot_radius = 0.2;   // r (m), >= 0.01
+  double robot_radius = 0.2;    // r (m), >= 0.01
   double object_radius = 0.25;  // ρ (m), >= 0.01
   double region_side = 1.0;     // s (m), >= 2ρ (it shrinks in dense footprints, see above)
   double sensor_range = 3.0;    // R (m), >= 0.01
-  double passage_margin = kPassageMargin;  // m, in [kMinPassageMargin, kMaxPassageMargin]
+  double passage_margin = kPassageMargin;       // m, in [kMinPassageMargin, kMaxPassageMargin]
   double max_obstacle_side = kMaxObstacleSide;  // m, see kMaxObstacleSide
   int max_attempts = 2000;  // rejection-sampling attempts per placement, in [1, 1e6]
 };
 
 // The sealed class's pocket (GeneratedInstance::pocket).
 struct SealedPocket {
-  bool present = false;             // class kSealed only
-  std::string walls;                // name of the familiar polygon (e.g. "P1")
+  bool present = false;                               // class kSealed only
+  std::string walls;                                  // name of the familiar polygon (e.g. "P1")
   geometry::Point goal = geometry::Point::Zero();     // M1's goal point, inside the pocket
   geometry::Point blocker = geometry::Point::Zero();  // B1's start
   geometry::Point mouth = geometry::Point::Zero();    // centre of the entrance
-  SealReport seal;                  // check_seal(scenario, M1, B1, goal)
+  SealReport seal;                                    // check_seal(scenario, M1, B1, goal)
 };
 
 struct GeneratedInstance {
   Scenario scenario;
-  double achieved_density = 0;   // fixed-obstacle area (shoelace) / workspace area
-  double footprint_density = 0;  // objects' disk area (B1 included) / workspace area
-  bool density_reached = false;  // achieved_density >= spec.obstacle_density
-  bool dense = false;            // the dense spacing rules were in force (see above)
-  double region_side = 0;        // s in use
-  double point_spacing = 0;      // d in use (Euclidean sparse, Chebyshev dense)
-  int redraws = 0;               // redraws after a failed exact check
-  SolvabilityReport solvability; // check_solvability(scenario); always solvable
+  double achieved_density = 0;    // fixed-obstacle area (shoelace) / workspace area
+  double footprint_density = 0;   // objects' disk area (B1 included) / workspace area
+  bool density_reached = false;   // achieved_density >= spec.obstacle_density
+  bool dense = false;             // the dense spacing rules were in force (see above)
+  double region_side = 0;         // s in use
+  double point_spacing = 0;       // d in use (Euclidean sparse, Chebyshev dense)
+  int redraws = 0;                // redraws after a failed exact check
+  SolvabilityReport solvability;  // check_solvability(scenario); always solvable
   SealedPocket pocket;
 };
 

@@ -155,8 +155,9 @@ SolvabilityReport check_solvability(const Scenario& s) {
   const std::optional<std::size_t> c = common_component(pair, required_points(s), r);
   rep.connected = c.has_value();
   if (!rep.connected) {
-    rep.failure = "(a) no component of the pair freespace holds a grasp position of every "
-                  "object start and region target";
+    rep.failure =
+        "(a) no component of the pair freespace holds a grasp position of every "
+        "object start and region target";
     return rep;
   }
   const RegionSet robot = freespace(s, obstacles, r);
@@ -196,8 +197,8 @@ SealReport check_seal(const Scenario& s, std::size_t object, std::size_t blocker
   const geometry::Disk b{s.objects[blocker].disk.center, s.objects[blocker].disk.radius + inner};
   const std::vector<Polygon> inscribed{
       geometry::regular_polygon(b, geometry::kDiskPolygonSides, false)};
-  const RegionSet sup = geometry::subtract(geometry::to_set(s.workspace),
-                                           grown(obstacles, inner, inscribed));
+  const RegionSet sup =
+      geometry::subtract(geometry::to_set(s.workspace), grown(obstacles, inner, inscribed));
   const std::optional<std::size_t> g = component_of(sup, goal);
   rep.sealed = !g || !has_grasp_in(sup, *g, start, r);
   // Opens: a subset of the freespace with no movable object.

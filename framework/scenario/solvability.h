@@ -70,14 +70,14 @@ inline constexpr double kParkingStep = 0.05;
 inline constexpr double kSealSlack = 0.01;
 
 struct SolvabilityReport {
-  bool solvable = false;  // (a), (b), (c) and (d) hold
-  bool connected = false;        // (a) and (b)
-  bool robot_connected = false;  // (c)
-  bool parking_found = false;    // (d)
+  bool solvable = false;                              // (a), (b), (c) and (d) hold
+  bool connected = false;                             // (a) and (b)
+  bool robot_connected = false;                       // (c)
+  bool parking_found = false;                         // (d)
   geometry::Point parking = geometry::Point::Zero();  // the spot of (d) when found
-  double pair_radius = 0;         // R
-  std::size_t pair_components = 0;  // components (regions) of F_pair
-  std::string failure;            // the first clause that failed, "" when solvable
+  double pair_radius = 0;                             // R
+  std::size_t pair_components = 0;                    // components (regions) of F_pair
+  std::string failure;  // the first clause that failed, "" when solvable
 };
 
 // The certificate above for a validated scenario (scenario::validate); throws rearm::Error

@@ -712,39 +712,39 @@ std::vector<CPolygonWithHoles> boolean_difference(const std::vector<CPolygon>& m
 
 enum class Outcome { kDone, kUnchanged, kDegenerate, kFallback };
 
-// The piece minus the windows' obstacles (each window's obstacles lie strictly inside it).
-// kDegenerate: a window is not in general position with the piece's loops (retry with other
-// windows); kFallback: the splice met something it does not handle (use the plain overlay);
-// kUnchanged: no window holds material of the piece.
-Outcome windowed(const Piece& piece, const std::vector<Window>& windows,
-                 const std::vector<std::vector<CPolygonWithHoles>>& cutters, bool settle,
-                 std::vector<Piece>& result) {
-  std::vector<std::size_t> near;
-  for (std::size_t w = 0; w < windows.size(); ++w) {
-    if (meet(windows[w].box(), piece.outer->box)) near.push_back(w);
-  }
-  if (near.empty()) return Outcome::kUnchanged;
-  std::vector<const Loop*> loops{piece.outer.get()};
-  for (const LoopPtr& h : piece.holes) loops.push_back(h.get());
-  const std::size_t nw = windows.size();
-  std::vector<std::vector<CPolygon>> material(nw), removed(nw);
-  std::vector<char> dead(nw, 0);            // the window lies in a hole: nothing of the piece in it
-  std::vector<char> kept(loops.size(), 1);  // the loop meets no window: it stays as it is
+// The state of windowed()'s three phases: the piece's loops cut by the windows (cut_loops), the
+// chains inside the windows that the windows' overlays give (overlay_windows), and the loops
+// spliced from them (splice).
+struct WindowedState {
+  std::vector<std::size_t> near;   // the windows whose boxes meet the piece's
+  std::vector<const Loop*> loops;  // the piece's outer boundary, then its holes
+  std::vector<std::vector<CPolygon>> material, removed;  // per window
+  std::vector<char> dead;  // per window: it lies in a hole, nothing of the piece in it
+  std::vector<char> kept;  // per loop: it meets no window and stays as it is
   Cut cut;
-  for (std::size_t k = 0; k < loops.size(); ++k) {
-    const Loop& l = *loops[k];
+  std::vector<LoopPtr> outers, holes;
+  std::vector<std::vector<CPoint>> inner;  // per entry crossing: its inner chain
+  std::vector<std::size_t> inner_end;      // per entry crossing: the exit crossing it ends at
+};
+
+// Phase 1: each loop cut at the window boundaries it crosses; what lies inside each window (of
+// the piece's material, or of its holes) goes to that window's overlay.
+Outcome cut_loops(const std::vector<Window>& windows, WindowedState& s) {
+  for (std::size_t k = 0; k < s.loops.size(); ++k) {
+    const Loop& l = *s.loops[k];
     std::vector<std::size_t> ws;
-    for (std::size_t w : near) {
+    for (std::size_t w : s.near) {
       if (meet(l.box, windows[w].box())) ws.push_back(w);
     }
     for (std::size_t w : ws) {
       if (!general_position(l, windows[w])) return Outcome::kDegenerate;
     }
+    Cut& cut = s.cut;
     const std::size_t first = cut.x.size();
     if (!ws.empty() && !cut_loop(l, k, windows, ws, cut)) return Outcome::kFallback;
     if (cut.x.size() > first) {
       if (l.pinched) return Outcome::kFallback;
-      kept[k] = 0;
+      s.kept[k] = 0;
     }
     const bool hole = k != 0;
     for (std::size_t w : ws) {
@@ -755,97 +755,110 @@ Outcome windowed(const Piece& piece, const std::vector<Window>& windows,
       if (!ids.empty()) {
         auto parts = clip(cut, std::move(ids), hole, windows[w]);
         if (!parts) return Outcome::kFallback;
-        auto& to = hole ? removed[w] : material[w];
+        auto& to = hole ? s.removed[w] : s.material[w];
         to.insert(to.end(), parts->begin(), parts->end());
       } else if (cut.x.size() == first && inside_window(l.exact.vertex(0), windows[w])) {
-        kept[k] = 0;  // wholly inside the window: the overlay returns it
+        s.kept[k] = 0;  // wholly inside the window: the overlay returns it
         CPolygon p = l.exact;
         if (hole) p.reverse_orientation();
-        (hole ? removed[w] : material[w]).push_back(std::move(p));
+        (hole ? s.removed[w] : s.material[w]).push_back(std::move(p));
       } else if (side_of(l, windows[w].corner(0)) == CGAL::ON_BOUNDED_SIDE) {
         if (hole) {
-          dead[w] = 1;
+          s.dead[w] = 1;
         } else {
-          material[w].push_back(window_polygon(windows[w]));
+          s.material[w].push_back(window_polygon(windows[w]));
         }
       }
     }
   }
+  return Outcome::kDone;
+}
 
-  // The exact overlays, one per window holding material, and their cycles: those off the
-  // window's boundary are whole; those on it give inner chains (entry crossing to exit
-  // crossing of that window).
-  std::vector<LoopPtr> outers, holes;
-  std::vector<std::vector<CPoint>> inner(cut.x.size());
-  std::vector<std::size_t> inner_end(cut.x.size(), kNone);
+// One cycle of window w's overlay: whole when off the window's boundary, else its inner chains
+// (entry crossing to exit crossing of that window). False when it cannot be matched.
+bool take_cycle(const CPolygon& c, bool is_outer, const Window& win, std::size_t w, bool settle,
+                WindowedState& s) {
+  if (c.is_empty()) return true;
   std::vector<unsigned> on;
   std::vector<std::size_t> which;
+  const Cut& cut = s.cut;
+  if (!match_crossings(c, win, w, cut, on, which)) return false;
+  const std::size_t n = c.size();
+  auto boundary_edge = [&](std::size_t i) { return (on[i] & on[(i + 1) % n]) != 0; };
+  bool touches = false;
+  for (std::size_t i = 0; i < n && !touches; ++i) touches = boundary_edge(i);
+  if (!touches) {
+    (is_outer ? s.outers : s.holes).push_back(exact_loop(c, settle));
+    return true;
+  }
+  std::vector<Point> check;
+  check.reserve(n);
+  for (std::size_t i = 0; i < n; ++i) check.push_back(round_point(c.vertex(i)));
+  if (has_duplicates(std::move(check))) return false;  // pinched on the boundary
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!(boundary_edge((i + n - 1) % n) && !boundary_edge(i))) continue;
+    // An inner chain from vertex i (an entry crossing) to the next vertex that starts a
+    // boundary edge (an exit crossing); a cycle wholly on the boundary has none.
+    const std::size_t from = which[i];
+    if (from == kNone || !cut.x[from].entry || s.inner_end[from] != kNone) return false;
+    std::vector<CPoint> pts;
+    std::size_t j = (i + 1) % n;
+    while (!boundary_edge(j)) {
+      pts.push_back(c.vertex(j));
+      j = (j + 1) % n;
+      if (j == i) return false;
+    }
+    const std::size_t to = which[j];
+    if (to == kNone || cut.x[to].entry) return false;
+    s.inner[from] = std::move(pts);
+    s.inner_end[from] = to;
+  }
+  return true;
+}
+
+// Phase 2: the exact overlays, one per window holding material, and their cycles.
+Outcome overlay_windows(const std::vector<Window>& windows,
+                        const std::vector<std::vector<CPolygonWithHoles>>& cutters, bool settle,
+                        WindowedState& s) {
+  s.inner.assign(s.cut.x.size(), {});
+  s.inner_end.assign(s.cut.x.size(), kNone);
   bool any = false;
-  for (std::size_t w : near) {
-    if (dead[w] || material[w].empty()) continue;
+  for (std::size_t w : s.near) {
+    if (s.dead[w] || s.material[w].empty()) continue;
     any = true;
-    const Window& win = windows[w];
     std::vector<CPolygonWithHoles> subtract(cutters[w].begin(), cutters[w].end());
-    for (CPolygon& p : removed[w]) subtract.emplace_back(std::move(p));
-    const std::vector<CPolygonWithHoles> local = boolean_difference(material[w], subtract);
-    auto take_cycle = [&](const CPolygon& c, bool is_outer) -> bool {
-      if (c.is_empty()) return true;
-      if (!match_crossings(c, win, w, cut, on, which)) return false;
-      const std::size_t n = c.size();
-      auto boundary_edge = [&](std::size_t i) { return (on[i] & on[(i + 1) % n]) != 0; };
-      bool touches = false;
-      for (std::size_t i = 0; i < n && !touches; ++i) touches = boundary_edge(i);
-      if (!touches) {
-        (is_outer ? outers : holes).push_back(exact_loop(c, settle));
-        return true;
-      }
-      std::vector<Point> check;
-      check.reserve(n);
-      for (std::size_t i = 0; i < n; ++i) check.push_back(round_point(c.vertex(i)));
-      if (has_duplicates(std::move(check))) return false;  // pinched on the boundary
-      for (std::size_t i = 0; i < n; ++i) {
-        if (!(boundary_edge((i + n - 1) % n) && !boundary_edge(i))) continue;
-        // An inner chain from vertex i (an entry crossing) to the next vertex that starts a
-        // boundary edge (an exit crossing); a cycle wholly on the boundary has none.
-        const std::size_t from = which[i];
-        if (from == kNone || !cut.x[from].entry || inner_end[from] != kNone) return false;
-        std::vector<CPoint> pts;
-        std::size_t j = (i + 1) % n;
-        while (!boundary_edge(j)) {
-          pts.push_back(c.vertex(j));
-          j = (j + 1) % n;
-          if (j == i) return false;
-        }
-        const std::size_t to = which[j];
-        if (to == kNone || cut.x[to].entry) return false;
-        inner[from] = std::move(pts);
-        inner_end[from] = to;
-      }
-      return true;
-    };
+    for (CPolygon& p : s.removed[w]) subtract.emplace_back(std::move(p));
+    const std::vector<CPolygonWithHoles> local = boolean_difference(s.material[w], subtract);
     for (const CPolygonWithHoles& p : local) {
       if (p.is_unbounded()) return Outcome::kFallback;
-      if (!take_cycle(p.outer_boundary(), true)) return Outcome::kFallback;
+      if (!take_cycle(p.outer_boundary(), true, windows[w], w, settle, s)) {
+        return Outcome::kFallback;
+      }
       for (auto h = p.holes_begin(); h != p.holes_end(); ++h) {
-        if (!take_cycle(*h, false)) return Outcome::kFallback;
+        if (!take_cycle(*h, false, windows[w], w, settle, s)) return Outcome::kFallback;
       }
     }
   }
-  if (!any) return Outcome::kUnchanged;
+  return any ? Outcome::kDone : Outcome::kUnchanged;
+}
 
-  // Splice: inner chains and the loops' outer chains (exit crossing to the next entry, outside
-  // every window), alternately. The crossing points themselves are dropped: each lies inside
-  // an edge of the piece, which the result follows straight through it.
+// Phase 3: inner chains and the loops' outer chains (exit crossing to the next entry, outside
+// every window), alternately. The crossing points themselves are dropped: each lies inside an
+// edge of the piece, which the result follows straight through it.
+Outcome splice(const Piece& piece, bool settle, WindowedState& s, std::vector<Piece>& result) {
+  const Cut& cut = s.cut;
   std::vector<char> used(cut.x.size(), 0);
   for (std::size_t e = 0; e < cut.x.size(); ++e) {
     if (!cut.x[e].entry || used[e]) continue;
     std::vector<CPoint> pts;
     bool has_outer_chain = false;
     for (std::size_t cur = e, guard = 0;; ++guard) {
-      if (guard > cut.x.size() || used[cur] || inner_end[cur] == kNone) return Outcome::kFallback;
+      if (guard > cut.x.size() || used[cur] || s.inner_end[cur] == kNone) {
+        return Outcome::kFallback;
+      }
       used[cur] = 1;
-      pts.insert(pts.end(), inner[cur].begin(), inner[cur].end());
-      const std::size_t x = inner_end[cur];
+      pts.insert(pts.end(), s.inner[cur].begin(), s.inner[cur].end());
+      const std::size_t x = s.inner_end[cur];
       if (used[x]) return Outcome::kFallback;
       used[x] = 1;
       pts.insert(pts.end(), cut.chain[x].begin(), cut.chain[x].end());
@@ -865,22 +878,47 @@ Outcome windowed(const Piece& piece, const std::vector<Window>& windows,
       if (o == CGAL::COLLINEAR) return Outcome::kFallback;
       is_outer = o == CGAL::COUNTERCLOCKWISE;
     }
-    (is_outer ? outers : holes).push_back(std::move(loop));
+    (is_outer ? s.outers : s.holes).push_back(std::move(loop));
   }
   if (std::find(used.begin(), used.end(), 0) != used.end()) return Outcome::kFallback;
-  for (std::size_t k = 0; k < loops.size(); ++k) {
-    if (!kept[k]) continue;
+  for (std::size_t k = 0; k < s.loops.size(); ++k) {
+    if (!s.kept[k]) continue;
     if (k == 0) {
-      outers.push_back(piece.outer);
+      s.outers.push_back(piece.outer);
     } else {
-      holes.push_back(piece.holes[k - 1]);
+      s.holes.push_back(piece.holes[k - 1]);
     }
   }
-  auto pieces = assemble(std::move(outers), std::move(holes));
+  auto pieces = assemble(std::move(s.outers), std::move(s.holes));
   if (!pieces) return Outcome::kFallback;
   result.insert(result.end(), std::make_move_iterator(pieces->begin()),
                 std::make_move_iterator(pieces->end()));
   return Outcome::kDone;
+}
+
+// The piece minus the windows' obstacles (each window's obstacles lie strictly inside it).
+// kDegenerate: a window is not in general position with the piece's loops (retry with other
+// windows); kFallback: the splice met something it does not handle (use the plain overlay);
+// kUnchanged: no window holds material of the piece.
+Outcome windowed(const Piece& piece, const std::vector<Window>& windows,
+                 const std::vector<std::vector<CPolygonWithHoles>>& cutters, bool settle,
+                 std::vector<Piece>& result) {
+  WindowedState s;
+  for (std::size_t w = 0; w < windows.size(); ++w) {
+    if (meet(windows[w].box(), piece.outer->box)) s.near.push_back(w);
+  }
+  if (s.near.empty()) return Outcome::kUnchanged;
+  s.loops.push_back(piece.outer.get());
+  for (const LoopPtr& h : piece.holes) s.loops.push_back(h.get());
+  s.material.resize(windows.size());
+  s.removed.resize(windows.size());
+  s.dead.assign(windows.size(), 0);
+  s.kept.assign(s.loops.size(), 1);
+  if (const Outcome o = cut_loops(windows, s); o != Outcome::kDone) return o;
+  if (const Outcome o = overlay_windows(windows, cutters, settle, s); o != Outcome::kDone) {
+    return o;
+  }
+  return splice(piece, settle, s, result);
 }
 
 // The piece minus the obstacles in one overlay with the piece's outer boundary and the holes
@@ -1066,6 +1104,134 @@ RegionSet ExactFreespace::subtract(const std::vector<Polygon>& movable) const {
   return rounded(difference(impl_->pieces, impl_->walls, obstacles, false));
 }
 
+namespace {
+
+// The clusters of `result` (pieces of a union clipped to the region), each with the polygons of
+// `from` whose boxes meet it as its candidates.
+void add_clusters(const std::vector<CPolygonWithHoles>& result,
+                  const std::vector<std::size_t>& from, const std::vector<Box>& boxes,
+                  Clusters& out) {
+  for (const CPolygonWithHoles& p : result) {
+    REARM_DEMAND(!p.is_unbounded(), "a bounded Boolean operation gave an unbounded region");
+    const Piece piece = exact_piece(p, false);
+    std::vector<std::size_t> near;
+    for (std::size_t i : from) {
+      if (meet(boxes[i], piece.outer->box)) near.push_back(i);
+    }
+    const std::size_t first = out.regions.size();
+    append_rounded(piece, out.regions);
+    for (std::size_t k = first; k < out.regions.size(); ++k) {
+      out.candidates.push_back(near);
+      out.sole.push_back(false);
+    }
+  }
+}
+
+// The region's loops clipped to window w: its material (`material`) and the holes' parts inside
+// it (`removed`); `dead` when the window lies in a hole. The loops' exact forms are made when
+// first needed.
+Outcome clip_region_to_window(const Region& region, const std::vector<LoopPtr>& loops,
+                              std::vector<LoopPtr>& exact_loops, const std::vector<Window>& windows,
+                              std::size_t w, std::vector<CPolygon>& material,
+                              std::vector<CPolygon>& removed, bool& dead) {
+  for (std::size_t k = 0; k < loops.size() && !dead; ++k) {
+    if (!meet(loops[k]->box, windows[w].box())) continue;
+    if (!exact_loops[k]) {
+      exact_loops[k] = double_loop(k == 0 ? region.outer : region.holes[k - 1], k != 0, true);
+    }
+    const Loop& l = *exact_loops[k];
+    if (!general_position(l, windows[w])) return Outcome::kDegenerate;
+    Cut cut;
+    if (!cut_loop(l, k, windows, {w}, cut)) return Outcome::kFallback;
+    std::vector<std::size_t> ids(cut.x.size());
+    std::iota(ids.begin(), ids.end(), 0);
+    if (!ids.empty()) {
+      auto parts = clip(cut, std::move(ids), k != 0, windows[w]);
+      if (!parts) return Outcome::kFallback;
+      auto& to = k == 0 ? material : removed;
+      to.insert(to.end(), parts->begin(), parts->end());
+    } else if (inside_window(l.exact.vertex(0), windows[w])) {
+      CPolygon p = l.exact;
+      if (k != 0) p.reverse_orientation();
+      (k == 0 ? material : removed).push_back(std::move(p));
+    } else if (side_of(l, windows[w].corner(0)) == CGAL::ON_BOUNDED_SIDE) {
+      if (k != 0) {
+        dead = true;
+      } else {
+        material.push_back(window_polygon(windows[w]));
+      }
+    }
+  }
+  return Outcome::kDone;
+}
+
+// (∪ parts) ∩ (∪ material) minus (∪ removed), exactly.
+std::vector<CPolygonWithHoles> clipped_union(const std::vector<CPolygon>& parts,
+                                             const std::vector<CPolygon>& material,
+                                             const std::vector<CPolygon>& removed) {
+  std::vector<CPolygonWithHoles> result;
+  if (parts.size() == 1 && material.size() == 1 && removed.empty()) {
+    CGAL::intersection(parts.front(), material.front(), std::back_inserter(result));
+    return result;
+  }
+  PolygonSet s;
+  s.join(parts.begin(), parts.end());
+  PolygonSet m;
+  m.join(material.begin(), material.end());
+  s.intersection(m);
+  if (!removed.empty()) {
+    PolygonSet u;
+    u.join(removed.begin(), removed.end());
+    s.difference(u);
+  }
+  s.polygons_with_holes(std::back_inserter(result));
+  return result;
+}
+
+// Windowed: (∪ group) ∩ region = (∪ group) ∩ (region ∩ W), the region clipped to each window
+// (freespace.h); the groups' unions are disjoint, so are their clusters. False when every try
+// of windows was degenerate or one met what the splice does not handle.
+bool windowed_union(const std::vector<Polygon>& polygons, const Region& region,
+                    const std::vector<LoopPtr>& loops, const std::vector<Box>& boxes,
+                    const std::vector<std::size_t>& touching, Clusters& out) {
+  const std::vector<std::vector<std::size_t>> groups = box_groups(boxes, touching);
+  std::vector<Box> group_box;
+  for (const auto& g : groups) {
+    Box b = boxes[g.front()];
+    for (std::size_t i : g) b += boxes[i];
+    group_box.push_back(b);
+  }
+  std::vector<LoopPtr> exact_loops(loops.size());  // CGAL polygons, made when first needed
+  for (int t = 0; t < kWindowTries; ++t) {
+    std::vector<std::vector<std::size_t>> members;
+    const std::vector<Window> windows = windows_for(group_box, t, members);
+    std::vector<std::pair<std::vector<CPolygonWithHoles>, std::vector<std::size_t>>> found;
+    Outcome o = Outcome::kDone;
+    for (std::size_t w = 0; w < windows.size() && o == Outcome::kDone; ++w) {
+      std::vector<CPolygon> material, removed;
+      bool dead = false;
+      o = clip_region_to_window(region, loops, exact_loops, windows, w, material, removed, dead);
+      if (o != Outcome::kDone || dead || material.empty()) continue;
+      std::vector<std::size_t> from;
+      std::vector<CPolygon> parts;
+      for (std::size_t g : members[w]) {
+        for (std::size_t i : groups[g]) {
+          from.push_back(i);
+          parts.push_back(geometry::internal::to_cgal(polygons[i]));
+        }
+      }
+      found.emplace_back(clipped_union(parts, material, removed), std::move(from));
+    }
+    if (o == Outcome::kDegenerate) continue;
+    if (o != Outcome::kDone) return false;  // fallback
+    for (const auto& [result, from] : found) add_clusters(result, from, boxes, out);
+    return true;
+  }
+  return false;
+}
+
+}  // namespace
+
 Clusters clip_union(const std::vector<Polygon>& polygons, const Region& region) {
   const std::size_t n = polygons.size();
   std::vector<Box> boxes;
@@ -1094,113 +1260,7 @@ Clusters clip_union(const std::vector<Polygon>& polygons, const Region& region) 
     }
   }
   if (touching.empty()) return out;
-  auto add = [&](const std::vector<CPolygonWithHoles>& result,
-                 const std::vector<std::size_t>& from) {
-    for (const CPolygonWithHoles& p : result) {
-      REARM_DEMAND(!p.is_unbounded(), "a bounded Boolean operation gave an unbounded region");
-      const Piece piece = exact_piece(p, false);
-      std::vector<std::size_t> near;
-      for (std::size_t i : from) {
-        if (meet(boxes[i], piece.outer->box)) near.push_back(i);
-      }
-      const std::size_t first = out.regions.size();
-      append_rounded(piece, out.regions);
-      for (std::size_t k = first; k < out.regions.size(); ++k) {
-        out.candidates.push_back(near);
-        out.sole.push_back(false);
-      }
-    }
-  };
-
-  // Windowed: (∪ group) ∩ region = (∪ group) ∩ (region ∩ W), the region clipped to each window
-  // (freespace.h); the groups' unions are disjoint, so are their clusters.
-  const std::vector<std::vector<std::size_t>> groups = box_groups(boxes, touching);
-  std::vector<Box> group_box;
-  for (const auto& g : groups) {
-    Box b = boxes[g.front()];
-    for (std::size_t i : g) b += boxes[i];
-    group_box.push_back(b);
-  }
-  std::vector<LoopPtr> exact_loops(loops.size());  // CGAL polygons, made when first needed
-  for (int t = 0; t < kWindowTries; ++t) {
-    std::vector<std::vector<std::size_t>> members;
-    const std::vector<Window> windows = windows_for(group_box, t, members);
-    std::vector<std::pair<std::vector<CPolygonWithHoles>, std::vector<std::size_t>>> found;
-    Outcome o = Outcome::kDone;
-    for (std::size_t w = 0; w < windows.size() && o == Outcome::kDone; ++w) {
-      std::vector<CPolygon> material, removed;
-      bool dead = false;
-      for (std::size_t k = 0; k < loops.size() && o == Outcome::kDone && !dead; ++k) {
-        if (!meet(loops[k]->box, windows[w].box())) continue;
-        if (!exact_loops[k]) {
-          exact_loops[k] = double_loop(k == 0 ? region.outer : region.holes[k - 1], k != 0, true);
-        }
-        const Loop& l = *exact_loops[k];
-        if (!general_position(l, windows[w])) {
-          o = Outcome::kDegenerate;
-          break;
-        }
-        Cut cut;
-        if (!cut_loop(l, k, windows, {w}, cut)) {
-          o = Outcome::kFallback;
-          break;
-        }
-        std::vector<std::size_t> ids(cut.x.size());
-        std::iota(ids.begin(), ids.end(), 0);
-        if (!ids.empty()) {
-          auto parts = clip(cut, std::move(ids), k != 0, windows[w]);
-          if (!parts) {
-            o = Outcome::kFallback;
-            break;
-          }
-          auto& to = k == 0 ? material : removed;
-          to.insert(to.end(), parts->begin(), parts->end());
-        } else if (inside_window(l.exact.vertex(0), windows[w])) {
-          CPolygon p = l.exact;
-          if (k != 0) p.reverse_orientation();
-          (k == 0 ? material : removed).push_back(std::move(p));
-        } else if (side_of(l, windows[w].corner(0)) == CGAL::ON_BOUNDED_SIDE) {
-          if (k != 0) {
-            dead = true;
-          } else {
-            material.push_back(window_polygon(windows[w]));
-          }
-        }
-      }
-      if (o != Outcome::kDone || dead || material.empty()) continue;
-      std::vector<std::size_t> from;
-      std::vector<CPolygon> parts;
-      for (std::size_t g : members[w]) {
-        for (std::size_t i : groups[g]) {
-          from.push_back(i);
-          parts.push_back(geometry::internal::to_cgal(polygons[i]));
-        }
-      }
-      std::vector<CPolygonWithHoles> result;
-      if (parts.size() == 1 && material.size() == 1 && removed.empty()) {
-        CGAL::intersection(parts.front(), material.front(), std::back_inserter(result));
-      } else {
-        PolygonSet s;
-        s.join(parts.begin(), parts.end());
-        PolygonSet m;
-        m.join(material.begin(), material.end());
-        s.intersection(m);
-        if (!removed.empty()) {
-          PolygonSet u;
-          u.join(removed.begin(), removed.end());
-          s.difference(u);
-        }
-        s.polygons_with_holes(std::back_inserter(result));
-      }
-      found.emplace_back(std::move(result), std::move(from));
-    }
-    if (o == Outcome::kDegenerate) continue;
-    if (o == Outcome::kDone) {
-      for (const auto& [result, from] : found) add(result, from);
-      return out;
-    }
-    break;  // fallback
-  }
+  if (windowed_union(polygons, region, loops, boxes, touching, out)) return out;
 
   // Plain: one overlay with the region's outer boundary and the holes the polygons reach.
   Region kept{region.outer, {}};
@@ -1218,7 +1278,7 @@ Clusters clip_union(const std::vector<Polygon>& polygons, const Region& region) 
   s.intersection(PolygonSet(geometry::internal::to_cgal(kept)));
   std::vector<CPolygonWithHoles> result;
   s.polygons_with_holes(std::back_inserter(result));
-  add(result, touching);
+  add_clusters(result, touching, boxes, out);
   return out;
 }
 

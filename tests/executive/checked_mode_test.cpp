@@ -46,8 +46,7 @@ class OverlappingPlant final : public Plant {
 TEST(CheckedMode, PassiveWhereTheInvariantsHold) {
   const TaskSpec spec = test_support::fig4_task();
   KinematicPlant plain(spec.world, spec.executive.robot_radius, test_support::fig4_start());
-  KinematicPlant checked_plant(spec.world, spec.executive.robot_radius,
-                               test_support::fig4_start());
+  KinematicPlant checked_plant(spec.world, spec.executive.robot_radius, test_support::fig4_start());
   TaskOptions checked;
   checked.check_invariants = true;
   const TaskResult a = run_task(spec, plain);
