@@ -1420,22 +1420,26 @@ Executive::Moving Executive::moving(const Activity& a, const Pose& pose) const {
   return {rho, r + rho + p_.grasp.pair_margin, reactive::pair_center(pose.x, pose.psi, rho)};
 }
 
-// Robust variant: the mission is accepting, but Fix mode moved objects that LTL actions had
-// placed (the formula's "eventually release" held when they were released, the task's end state
-// has them elsewhere). Each is released into its region again as an interface-layer action, at
-// most 2 × (objects + 1) times per task.
 std::size_t Executive::restore_limit() const {
   return 2 * (map_.ground_truth().movable.size() + 1);
 }
 
+bool Executive::in_region(const std::string& object, const std::string& id) const {
+  const auto d = map_.object(object);
+  return d && geometry::contains(region(id).polygon, d->center);
+}
+
+// Robust variant: the mission is accepting, but Fix mode moved objects that LTL actions had
+// placed (the formula's "eventually release" held when they were released, the task's end state
+// has them elsewhere). Each is released into its region again as an interface-layer action, at
+// most 2 × (objects + 1) times per task.
 bool Executive::restore_next(double t) {
   while (!displaced_.empty() && restores_ < restore_limit()) {
     const auto [object, region] = displaced_.front();
     displaced_.erase(displaced_.begin());
     const auto it = placed_.find(object);
     if (it == placed_.end() || it->second != region) continue;  // placed anew since
-    const auto d = map_.object(object);
-    if (d && geometry::contains(this->region(region).polygon, d->center)) continue;
+    if (in_region(object, region)) continue;
     ++restores_;
     ++recoveries_.restores;
     fix_.push_back(make(Kind::kRelease, object, region, true, t));
@@ -1454,9 +1458,7 @@ void Executive::finish_accepting(double t) {
   const std::string done = "mission complete: the automaton stays in an accepting state";
   std::string moved;
   for (const auto& [object, id] : placed_) {
-    const auto d = map_.object(object);
-    if (d && geometry::contains(region(id).polygon, d->center)) continue;
-    moved += (moved.empty() ? "" : ", ") + object + " not in " + id;
+    if (!in_region(object, id)) moved += (moved.empty() ? "" : ", ") + object + " not in " + id;
   }
   if (moved.empty()) return finish(TaskStatus::kCompleted, done, t);
   if (p_.robust.restore) {

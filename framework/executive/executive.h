@@ -516,6 +516,8 @@ class Executive {
   bool fetch_ltl(double t);
   bool restore_next(double t);
   std::size_t restore_limit() const;  // 2 (objects + 1) restores per task
+  // Whether the map locates the object's centre inside region `id` (exact).
+  bool in_region(const std::string& object, const std::string& id) const;
   // The end of a mission that is accepting (completed, or stuck when a restore failed).
   void finish_accepting(double t);
   Advance advance(Activity& a, const Pose& pose, double t, double dt);
