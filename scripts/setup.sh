@@ -10,6 +10,8 @@ PACKAGES=(
   libeigen3-dev libcgal-dev libgmp-dev libmpfr-dev libbox2d-dev libompl-dev
   libboost-filesystem-dev libboost-serialization-dev libboost-system-dev
   libtbb-dev libbenchmark-dev libgtest-dev libgmock-dev libyaml-cpp-dev libmimalloc-dev
+  # the command line
+  libcli11-dev
   # independent LTL translator used by the tests; plotting
   spin python3-matplotlib python3-pil
   # the fuzz targets (tests/fuzz): clang with its sanitizer and libFuzzer runtimes; the code

@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <limits>
+#include <memory>
 #include <numbers>
 #include <optional>
 #include <string>
@@ -21,6 +22,7 @@
 #include "experiment/json_writer.h"
 #include "experiment/task_from_scenario.h"
 #include "geometry/distance.h"
+#include "options.h"
 #include "python_plot.h"
 #include "reactive/closed_loop.h"
 #include "reactive/diffeomorphism.h"
@@ -37,9 +39,7 @@ using geometry::Disk;
 using geometry::Point;
 using geometry::Polygon;
 
-constexpr const char* kUsage =
-    "usage: rearm diffeo SCENARIO.yaml --out DIR [--goal NAME|X,Y] [--seed N] [--starts N]\n"
-    "                    [--robot unicycle|holonomic] [--no-plot]\n\n"
+constexpr const char* kFooter =
     "Builds the mapped space and the purging diffeomorphism h (docs/reactive.md §2-3) of the\n"
     "scene of SCENARIO.yaml (format: experiments/scenarios/README.md) with every obstacle\n"
     "known (unknown obstacles as if fully seen, objects as disks), and integrates the closed\n"
@@ -49,15 +49,11 @@ constexpr const char* kUsage =
     "under h, and the paths in mapped and model coordinates. Then runs\n"
     "experiments/plot/diffeo.py, which draws DIR/semantic.png, DIR/mapped.png, DIR/model.png\n"
     "and DIR/path.png (skipped with a warning when python3 or matplotlib is missing; set\n"
-    "REARM_PYTHON to choose the interpreter).\n\n"
-    "  --goal G    a region's name or a point X,Y; default: the first region with a point in\n"
-    "              the start's freespace component (of a region, the free point nearest its\n"
-    "              centroid, on a 5 cm grid)\n"
-    "  --robot     unicycle (differential drive, default) or holonomic (fully actuated)\n"
-    "  --starts N  extra closed-loop runs from random free starts (default 0, at most 1000)\n"
-    "  --no-plot   write the JSON only\n\n"
+    "REARM_PYTHON to choose the interpreter).\n"
+    "--goal: default the first region with a point in the start's freespace component (of a\n"
+    "region, the free point nearest its centroid, on a 5 cm grid).\n"
     "Exit codes: 0 every path reached the goal, 1 a path failed (the JSON is still written),\n"
-    "2 bad usage or a bad scenario.\n";
+    "2 bad usage or a bad scenario.";
 
 // Closed-loop integration (docs/reactive.md §6).
 constexpr double kMaxTime = 400;         // s of simulated time per path
@@ -66,7 +62,7 @@ constexpr int kRecordEvery = 5;          // steps between recorded path points
 // Random starts: at least this far (m) from every boundary of the freespace.
 constexpr double kStartClearance = 0.2;
 constexpr int kStartDraws = 100000;
-constexpr std::uint64_t kMaxStarts = 1000;
+constexpr int kMaxStarts = 1000;
 // The drawing grid: lines per longer side of F_e, samples per grid cell along a line.
 constexpr int kGridLines = 40;
 constexpr int kSamplesPerCell = 8;
@@ -79,49 +75,12 @@ constexpr int kJsonDigits = 9;
 
 // The command line, parsed.
 struct DiffeoArgs {
-  std::string scenario, out_dir, goal;
+  std::string scenario, out_dir, goal, robot_name = "unicycle";
+  reactive::RobotModel robot = reactive::RobotModel::kUnicycle;
   std::uint64_t seed = 1;
   int starts = 0;
-  reactive::RobotModel robot = reactive::RobotModel::kUnicycle;
-  bool plot = true, help = false;
+  bool no_plot = false;
 };
-
-DiffeoArgs parse_diffeo_args(const std::vector<std::string>& args) {
-  DiffeoArgs d;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    if (a == "--help" || a == "-h") {
-      d.help = true;
-      return d;
-    } else if (a == "--out") {
-      d.out_dir = option_value(args, i);
-    } else if (a == "--goal") {
-      d.goal = option_value(args, i);
-    } else if (a == "--seed") {
-      d.seed = parse_count(a, option_value(args, i));
-    } else if (a == "--starts") {
-      const std::uint64_t n = parse_count(a, option_value(args, i));
-      if (n > kMaxStarts) throw Error("--starts must be at most " + std::to_string(kMaxStarts));
-      d.starts = static_cast<int>(n);
-    } else if (a == "--robot") {
-      const std::string& v = option_value(args, i);
-      if (v != "unicycle" && v != "holonomic") {
-        throw Error("--robot expects unicycle or holonomic, got '" + v + "'");
-      }
-      d.robot =
-          v == "unicycle" ? reactive::RobotModel::kUnicycle : reactive::RobotModel::kHolonomic;
-    } else if (a == "--no-plot") {
-      d.plot = false;
-    } else if (a.rfind("--", 0) == 0 || !d.scenario.empty()) {
-      throw Error("unknown argument '" + a + "'\n" + kUsage);
-    } else {
-      d.scenario = a;
-    }
-  }
-  if (d.scenario.empty()) throw Error(std::string("missing SCENARIO.yaml\n") + kUsage);
-  if (d.out_dir.empty()) throw Error(std::string("missing --out DIR\n") + kUsage);
-  return d;
-}
 
 // The static scene of a scenario, as the reactive layer sees it with every obstacle known.
 struct Scene {
@@ -494,14 +453,9 @@ void report(const reactive::MappedSpace& m, const reactive::Diffeomorphism& h,
   }
 }
 
-}  // namespace
-
-int run_diffeo(const std::vector<std::string>& args) {
-  const DiffeoArgs a = parse_diffeo_args(args);
-  if (a.help) {
-    std::fputs(kUsage, stdout);
-    return kExitOk;
-  }
+int diffeo(DiffeoArgs a) {
+  a.robot = a.robot_name == "holonomic" ? reactive::RobotModel::kHolonomic
+                                        : reactive::RobotModel::kUnicycle;
   const scenario::Scenario sc = scenario::load_scenario(a.scenario);
   Scene scene = scene_of(sc);
   reactive::MappedSpace m;
@@ -544,7 +498,7 @@ int run_diffeo(const std::vector<std::string>& args) {
   write_file_atomically(json_path.string(), j.str() + "\n");
   report(m, h, runs, reached);
   std::printf("wrote %s\n", json_path.string().c_str());
-  if (a.plot) {
+  if (!a.no_plot) {
     const PlotOutcome drawn =
         run_plot("diffeo", "diffeo.py", {"matplotlib"}, {json_path.string(), a.out_dir});
     if (drawn == PlotOutcome::kFailed) return kExitFailure;
@@ -553,6 +507,27 @@ int run_diffeo(const std::vector<std::string>& args) {
     }
   }
   return reached == static_cast<int>(runs.size()) ? kExitOk : kExitFailure;
+}
+
+}  // namespace
+
+Command add_diffeo(CLI::App& program) {
+  CLI::App* c =
+      program.add_subcommand("diffeo", "build and plot the diffeomorphism of a static scene");
+  c->footer(kFooter);
+  auto a = std::make_shared<DiffeoArgs>();
+  add_scenario_file(*c, a->scenario);
+  add_out_dir(*c, a->out_dir, "required")->required();
+  c->add_option("--goal", a->goal, "a region's name or a point X,Y")->type_name("NAME|X,Y");
+  add_seed(*c, a->seed, "seeds the random starts (default 1)");
+  c->add_option("--starts", a->starts, "extra closed-loop runs from random free starts")
+      ->check(count_check())
+      ->check(CLI::Range(0, kMaxStarts))
+      ->type_name("N");
+  c->add_option("--robot", a->robot_name, "unicycle (differential drive, default) or holonomic")
+      ->check(CLI::IsMember({"unicycle", "holonomic"}));
+  c->add_flag("--no-plot", a->no_plot, "write the JSON only");
+  return {c, [a] { return diffeo(*a); }};
 }
 
 }  // namespace rearm::cli

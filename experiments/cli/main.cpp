@@ -1,3 +1,6 @@
+// rearm: the program. Registers the subcommands on one CLI11 application and maps outcomes to
+// exit codes: CLI11's parse errors and rearm::Error (bad usage or input) exit 2,
+// rearm::BudgetExceeded and other failures of the work exit 1.
 #include <cstdio>
 #include <exception>
 #include <string>
@@ -5,57 +8,89 @@
 
 #include "command.h"
 #include "core/error.h"
+#include "experiment/provenance.h"
+#include "options.h"
 
 namespace {
 
 using rearm::cli::Command;
 
-const Command kCommands[] = {
-    {"translate", "translate an LTL formula into a Büchi automaton", &rearm::cli::run_translate},
-    {"plan", "run the mission controller against a perfect executor", &rearm::cli::run_plan},
-    {"diffeo", "build and plot the diffeomorphism of a static scene", &rearm::cli::run_diffeo},
-    {"run", "run a scenario's task in the Box2D world (metrics, figure, animation)",
-     &rearm::cli::run_run},
-    {"baseline", "plan and execute a scenario with an OMPL rearrangement baseline (mRS, BiRRT)",
-     &rearm::cli::run_baseline},
-    {"sweep", "Monte Carlo sweeps of rearm and the baselines (run, merge, report)",
-     &rearm::cli::run_sweep},
-};
+constexpr const char* kDescription =
+    "rearm reproduces the hybrid architecture of Vasilopoulos, Kantaros, Pappas and\n"
+    "Koditschek, \"Reactive Planning for Mobile Manipulation Tasks in Unexplored Semantic\n"
+    "Environments\" (ICRA 2021).";
 
-void print_help() {
-  std::printf(
-      "usage: rearm <command> [options]\n\n"
-      "rearm reproduces the hybrid architecture of Vasilopoulos, Kantaros, Pappas and\n"
-      "Koditschek, \"Reactive Planning for Mobile Manipulation Tasks in Unexplored Semantic\n"
-      "Environments\" (ICRA 2021).\n\ncommands:\n");
-  for (const Command& c : kCommands) std::printf("  %-12s %s\n", c.name, c.summary);
-  std::printf("\n'rearm <command> --help' describes a command.\n");
+std::string version_text() {
+  return std::string("rearm ") + REARM_VERSION + " (revision " +
+         rearm::experiment::build_revision() + ")";
+}
+
+// The command whose options were being parsed (the first one selected), or nullptr.
+const Command* selected(const std::vector<Command>& commands) {
+  for (const Command& c : commands) {
+    if (c.app->parsed()) return &c;
+  }
+  return nullptr;
+}
+
+// "rearm", "rearm <command>" or "rearm <command> <subcommand>", for messages.
+std::string who(const Command* c) {
+  if (c == nullptr) return "rearm";
+  std::string name = "rearm " + c->app->get_name();
+  for (std::vector<CLI::App*> sub = c->app->get_subcommands(); !sub.empty();
+       sub = sub.front()->get_subcommands()) {
+    name += " " + sub.front()->get_name();
+  }
+  return name;
+}
+
+int usage_error(const Command* c, const std::string& message) {
+  std::fprintf(stderr, "%s: %s\n(try '%s --help')\n", who(c).c_str(), message.c_str(),
+               who(c).c_str());
+  return rearm::cli::kExitUsage;
+}
+
+// Runs the parsed command; exceptions become messages and exit codes.
+int execute(const Command& c) {
+  try {
+    return c.run();
+  } catch (const rearm::BudgetExceeded& e) {
+    std::fprintf(stderr, "%s: %s\n", who(&c).c_str(), e.what());
+    return rearm::cli::kExitFailure;
+  } catch (const rearm::Error& e) {
+    std::fprintf(stderr, "%s: %s\n", who(&c).c_str(), e.what());
+    return rearm::cli::kExitUsage;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "%s: internal error: %s\n", who(&c).c_str(), e.what());
+    return rearm::cli::kExitFailure;
+  }
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::vector<std::string> args(argv + 1, argv + argc);
-  if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
-    print_help();
-    return args.empty() ? rearm::cli::kExitUsage : rearm::cli::kExitOk;
+  CLI::App program{kDescription, "rearm"};
+  program.set_version_flag("--version", version_text(), "Print the version and exit");
+  program.require_subcommand(1, 1);
+  program.footer("'rearm <command> --help' describes a command.");
+  const std::vector<Command> commands{
+      rearm::cli::add_translate(program), rearm::cli::add_plan(program),
+      rearm::cli::add_diffeo(program),    rearm::cli::add_run(program),
+      rearm::cli::add_baseline(program),  rearm::cli::add_sweep(program)};
+  if (argc < 2) {
+    std::fputs(program.help().c_str(), stdout);
+    return rearm::cli::kExitUsage;
   }
-  for (const Command& c : kCommands) {
-    if (args[0] == c.name) {
-      try {
-        return c.run(std::vector<std::string>(args.begin() + 1, args.end()));
-      } catch (const rearm::BudgetExceeded& e) {
-        std::fprintf(stderr, "rearm %s: %s\n", c.name, e.what());
-        return rearm::cli::kExitFailure;
-      } catch (const rearm::Error& e) {
-        std::fprintf(stderr, "rearm %s: %s\n", c.name, e.what());
-        return rearm::cli::kExitUsage;
-      } catch (const std::exception& e) {
-        std::fprintf(stderr, "rearm %s: internal error: %s\n", c.name, e.what());
-        return rearm::cli::kExitFailure;
-      }
-    }
+  const std::string first = argv[1];
+  bool known = first.rfind('-', 0) == 0;
+  for (const Command& c : commands) known = known || c.app->get_name() == first;
+  if (!known) return usage_error(nullptr, "unknown command '" + first + "'");
+  try {
+    program.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) return program.exit(e);
+    return usage_error(selected(commands), e.what());
   }
-  std::fprintf(stderr, "rearm: unknown command '%s' (try 'rearm --help')\n", args[0].c_str());
-  return rearm::cli::kExitUsage;
+  const Command* c = selected(commands);
+  return c == nullptr ? usage_error(nullptr, "a command is required") : execute(*c);
 }

@@ -4,6 +4,7 @@
 // listed ones) and prints the action lasso.
 #include <cstdio>
 #include <map>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <tuple>
@@ -12,15 +13,13 @@
 #include "command.h"
 #include "core/error.h"
 #include "ltl/parser.h"
+#include "options.h"
 #include "symbolic/mission_controller.h"
 
 namespace rearm::cli {
 namespace {
 
-constexpr const char* kUsage =
-    "usage: rearm plan --formula F [--initial ACTION] [--infeasible ACTION ...]\n"
-    "                  [--objects M1,M2,...] [--regions l1,l2,...] [--max-steps N]\n"
-    "                  [--allow-negation] [--graph paper|selfloop] [--show-graph]\n\n"
+constexpr const char* kFooter =
     "Runs the online mission controller (paper Section III, Appendix I) against a perfect\n"
     "executor in which every action succeeds except the --infeasible ones, and prints the\n"
     "resulting action lasso:\n"
@@ -40,9 +39,20 @@ constexpr const char* kUsage =
     "also plans a symbol that cycles through states without self-loops) or paper (Appendix I-B\n"
     "exactly: the multi-hop runs of Eq. 4). --show-graph prints G first: its nodes with d_F\n"
     "(Eq. 7) and V_F (Eq. 6), its edges with the symbols driving them (Eq. 9), accepting\n"
-    "edges (Def. 3) marked.\n";
+    "edges (Def. 3) marked.\n"
+    "Exit: 0 when a lasso or infeasibility was printed, 1 when --max-steps ran out,\n"
+    "2 for bad usage or a formula outside the fragment.";
 
 constexpr std::size_t kDefaultMaxSteps = 100000;
+constexpr std::size_t kMostMaxSteps = 999999999;
+
+// The command line of `rearm plan`, parsed.
+struct PlanArgs {
+  std::string formula, initial, graph, objects, regions;
+  std::vector<std::string> infeasible;
+  std::size_t max_steps = kDefaultMaxSteps;
+  bool show_graph = false, allow_negation = false;
+};
 
 std::vector<std::string> split_list(const std::string& s) {
   std::vector<std::string> out;
@@ -61,60 +71,26 @@ std::string join(const std::vector<symbolic::Action>& as) {
   return s;
 }
 
-}  // namespace
-
-int run_plan(const std::vector<std::string>& args) {
-  std::string formula;
-  bool have_formula = false;
+symbolic::MissionOptions mission_options(const PlanArgs& a) {
   symbolic::MissionOptions options;
-  std::vector<symbolic::Action> infeasible;
-  std::size_t max_steps = kDefaultMaxSteps;
-  bool show_graph = false;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    auto value = [&]() -> const std::string& { return option_value(args, i); };
-    if (a == "--help" || a == "-h") {
-      std::fputs(kUsage, stdout);
-      return kExitOk;
-    } else if (a == "--formula") {
-      formula = value();
-      have_formula = true;
-    } else if (a == "--initial") {
-      options.initial = symbolic::Action::parse(value());
-    } else if (a == "--infeasible") {
-      infeasible.push_back(symbolic::Action::parse(value()));
-      while (i + 1 < args.size() && args[i + 1].rfind("--", 0) != 0) {
-        infeasible.push_back(symbolic::Action::parse(args[++i]));
-      }
-    } else if (a == "--graph") {
-      options.graph = symbolic::parse_graph_mode(value());
-    } else if (a == "--show-graph") {
-      show_graph = true;
-    } else if (a == "--allow-negation") {
-      options.allow_negation = true;
-    } else if (a == "--objects") {
-      options.vocabulary.objects = split_list(value());
-    } else if (a == "--regions") {
-      options.vocabulary.regions = split_list(value());
-    } else if (a == "--max-steps") {
-      const std::string& v = value();
-      if (v.empty() || v.find_first_not_of("0123456789") != std::string::npos || v.size() > 9) {
-        throw Error("--max-steps expects a positive integer, got '" + v + "'");
-      }
-      max_steps = std::stoul(v);
-      if (max_steps == 0) throw Error("--max-steps expects a positive integer");
-    } else {
-      throw Error("unknown argument '" + a + "'\n" + kUsage);
-    }
-  }
-  if (!have_formula) throw Error(std::string("missing --formula\n") + kUsage);
-  for (const auto& a : infeasible) options.vocabulary.check(a);
+  if (!a.initial.empty()) options.initial = symbolic::Action::parse(a.initial);
+  if (!a.graph.empty()) options.graph = symbolic::parse_graph_mode(a.graph);
+  options.allow_negation = a.allow_negation;
+  if (!a.objects.empty()) options.vocabulary.objects = split_list(a.objects);
+  if (!a.regions.empty()) options.vocabulary.regions = split_list(a.regions);
+  return options;
+}
 
-  symbolic::MissionController mc(ltl::parse(formula), options);
-  if (show_graph) std::fputs(mc.graph().to_text().c_str(), stdout);
-  auto is_infeasible = [&](const symbolic::Action& a) {
+int plan(const PlanArgs& a) {
+  const symbolic::MissionOptions options = mission_options(a);
+  std::vector<symbolic::Action> infeasible;
+  for (const std::string& text : a.infeasible) infeasible.push_back(symbolic::Action::parse(text));
+  for (const auto& x : infeasible) options.vocabulary.check(x);
+  symbolic::MissionController mc(ltl::parse(a.formula), options);
+  if (a.show_graph) std::fputs(mc.graph().to_text().c_str(), stdout);
+  auto is_infeasible = [&](const symbolic::Action& x) {
     for (const auto& b : infeasible) {
-      if (a == b) return true;
+      if (x == b) return true;
     }
     return false;
   };
@@ -122,7 +98,7 @@ int run_plan(const std::vector<std::string>& args) {
   // letter, the infeasible actions known) repeating closes the lasso.
   std::map<std::tuple<std::uint32_t, std::uint32_t, std::size_t, std::size_t>, std::size_t> seen;
   std::vector<symbolic::Action> trace;
-  for (std::size_t step = 0; step < max_steps; ++step) {
+  for (std::size_t step = 0; step < a.max_steps; ++step) {
     const auto key = std::make_tuple(mc.generation(), mc.node(), mc.held_letter(),
                                      mc.infeasible_actions().size());
     if (auto it = seen.find(key); it != seen.end()) {
@@ -149,7 +125,31 @@ int run_plan(const std::vector<std::string>& args) {
       trace.push_back(*action);
     }
   }
-  throw BudgetExceeded("no lasso within --max-steps " + std::to_string(max_steps) + " steps");
+  throw BudgetExceeded("no lasso within --max-steps " + std::to_string(a.max_steps) + " steps");
+}
+
+}  // namespace
+
+Command add_plan(CLI::App& program) {
+  CLI::App* c =
+      program.add_subcommand("plan", "run the mission controller against a perfect executor");
+  c->footer(kFooter);
+  auto a = std::make_shared<PlanArgs>();
+  c->add_option("--formula", a->formula, "the LTL task")->required()->type_name("F");
+  c->add_option("--initial", a->initial, "the action predicate holding at the start")
+      ->type_name("ACTION");
+  c->add_option("--infeasible", a->infeasible, "actions the executor fails")->type_name("ACTION");
+  c->add_option("--objects", a->objects, "the scenario's objects")->type_name("M1,M2,...");
+  c->add_option("--regions", a->regions, "the scenario's regions")->type_name("l1,l2,...");
+  c->add_option("--max-steps", a->max_steps, "steps before giving up (exit 1)")
+      ->check(count_check())
+      ->check(CLI::Range(std::size_t{1}, kMostMaxSteps))
+      ->type_name("N");
+  c->add_flag("--allow-negation", a->allow_negation, "plan negated predicates (beyond the paper)");
+  c->add_option("--graph", a->graph, "G's construction: selfloop (default) or paper")
+      ->check(CLI::IsMember({"paper", "selfloop"}));
+  c->add_flag("--show-graph", a->show_graph, "print G first");
+  return {c, [a] { return plan(*a); }};
 }
 
 }  // namespace rearm::cli

@@ -69,4 +69,11 @@ PlotOutcome run_plot(const std::string& command, const std::string& script,
   return PlotOutcome::kDrawn;
 }
 
+bool draw_run(const std::string& command, const fs::path& trajectory, const std::string& out_dir,
+              bool animation) {
+  std::vector<std::string> args{trajectory.string(), out_dir};
+  if (!animation) args.push_back("--no-animation");
+  return run_plot(command, "run.py", {"matplotlib", "PIL"}, args) != PlotOutcome::kFailed;
+}
+
 }  // namespace rearm::cli

@@ -32,4 +32,10 @@ enum class PlotOutcome { kDrawn, kSkipped, kFailed };
 PlotOutcome run_plot(const std::string& command, const std::string& script,
                      const std::vector<std::string>& modules, const std::vector<std::string>& args);
 
+// The figure DIR/run.png and, unless !animation, the animation DIR/run.gif of a trajectory.json
+// (experiments/plot/run.py, for `rearm run` and `rearm baseline`); false when the script ran
+// and failed (a missing python or script is a warning only).
+bool draw_run(const std::string& command, const std::filesystem::path& trajectory,
+              const std::string& out_dir, bool animation);
+
 }  // namespace rearm::cli

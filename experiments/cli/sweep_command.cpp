@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,7 @@
 #include "experiment/sweep_merge.h"
 #include "experiment/sweep_plan.h"
 #include "experiment/sweep_runner.h"
+#include "options.h"
 #include "python_plot.h"
 #include "scenario/sweep_file.h"
 
@@ -25,11 +27,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr const char* kUsage =
-    "usage: rearm sweep SWEEP.yaml --out DIR [--threads T] [--shard I/N]\n"
-    "                  [--resume-any-revision] [--checked] [--quiet]\n"
-    "       rearm sweep merge DIR... --out DIR\n"
-    "       rearm sweep report DIR [--no-plot]\n\n"
+constexpr const char* kFooter =
     "Runs a Monte Carlo sweep (format: experiments/sweeps/README.md): every method of the file\n"
     "on seeded random instances of every cell (goal class x object count x target obstacle\n"
     "density x unknown fraction x unknown shapes), `seeds` instances per cell, on T threads\n"
@@ -37,21 +35,26 @@ constexpr const char* kUsage =
     "same --out runs only the trials that are missing (a row cut by an interruption is dropped\n"
     "and run again). Every instance is kept as DIR/instances/<name>.yaml for rearm run and\n"
     "rearm baseline. Progress goes to stderr.\n"
-    "  --threads T            worker threads (default 1)\n"
-    "  --shard I/N            run only shard I of N (0 <= I < N): instances whose index is I\n"
-    "                         mod N, each with all its methods; merge the shards' folders after\n"
-    "  --resume-any-revision  resume a DIR whose rows came from another build revision\n"
-    "  --checked              rearm's trials check the closed loop's invariants on every tick\n"
-    "                         (finite commands, no overlap beyond Box2D's slop, det Dh > 0,\n"
-    "                         the law's model point in the model freespace); a violation\n"
-    "                         ends the trial with status error and names it\n"
-    "  --quiet                no progress lines\n"
-    "merge: unites the rows of shard (or interrupted) folders of one sweep into --out.\n"
-    "report: writes DIR/report.md, the plots DIR/*.png (python3 with matplotlib) and the OMPL\n"
-    "benchmark logs DIR/ompl/*.log (ompl_benchmark_statistics DIR/ompl/*.log -d DIR/sweep.db\n"
-    "builds Planner Arena's database).\n"
+    "--shard I/N: run only the instances whose index is I mod N (0 <= I < N), each with all\n"
+    "its methods; merge the shards' folders after.\n"
+    "--checked: rearm's trials check the closed loop's invariants on every tick (finite\n"
+    "commands, no overlap beyond Box2D's slop, det Dh > 0, the law's model point in the model\n"
+    "freespace); a violation ends the trial with status error and names it.\n"
+    "'rearm sweep merge --help' and 'rearm sweep report --help' describe the other two.\n"
     "Exit: 0 when every trial ran (whatever its outcome), 1 when a trial ended in `error`,\n"
-    "2 for bad usage or an invalid sweep file.\n";
+    "2 for bad usage or an invalid sweep file.";
+
+constexpr int kMaxThreads = 256;
+
+// The command line of `rearm sweep` and its merge and report subcommands, parsed.
+struct SweepArgs {
+  std::string path, shard;
+  experiment::SweepOptions options;
+  bool quiet = false;
+  std::vector<std::string> merge_dirs;
+  std::string merge_out, report_dir;
+  bool no_plot = false;
+};
 
 experiment::MethodRegistry registry() {
   experiment::MethodRegistry r;
@@ -71,20 +74,9 @@ std::string read_file(const std::string& path) {
   return text;
 }
 
-int run_merge(const std::vector<std::string>& args) {
-  std::vector<std::string> dirs;
-  std::string out;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    if (args[i] == "--out") {
-      out = option_value(args, i);
-    } else if (args[i].rfind("--", 0) == 0) {
-      throw Error("sweep merge: unknown option " + args[i] + "\n" + kUsage);
-    } else {
-      dirs.push_back(args[i]);
-    }
-  }
-  if (dirs.empty() || out.empty())
-    throw Error(std::string("sweep merge needs DIR... --out DIR\n") + kUsage);
+int run_merge(const SweepArgs& a) {
+  const std::vector<std::string>& dirs = a.merge_dirs;
+  const std::string& out = a.merge_out;
   const experiment::MergeSummary m = experiment::merge_sweeps(dirs, out);
   std::printf(
       "merged %zu folders into %s: %zu of %zu trials (%zu duplicates, %zu cut lines dropped)\n",
@@ -92,62 +84,27 @@ int run_merge(const std::vector<std::string>& args) {
   return kExitOk;
 }
 
-int run_report(const std::vector<std::string>& args) {
-  std::string dir;
-  bool plot = true;
-  for (const std::string& a : args) {
-    if (a == "--no-plot") {
-      plot = false;
-    } else if (a.rfind("--", 0) == 0) {
-      throw Error("sweep report: unknown option " + a + "\n" + kUsage);
-    } else if (dir.empty()) {
-      dir = a;
-    } else {
-      throw Error("sweep report takes one folder\n" + std::string(kUsage));
-    }
-  }
-  if (dir.empty()) throw Error(std::string("sweep report needs a folder\n") + kUsage);
+int run_report(const SweepArgs& a) {
+  const std::string& dir = a.report_dir;
   const experiment::CsvTable t =
       experiment::read_csv((fs::path(dir) / experiment::kTrialsCsv).string());
   const std::string setup = read_file((fs::path(dir) / experiment::kSweepCopy).string());
   const auto logs = experiment::write_ompl_logs(t, setup, (fs::path(dir) / "ompl").string());
   std::printf("wrote %zu OMPL benchmark logs to %s/ompl\n", logs.size(), dir.c_str());
-  if (!plot) return kExitOk;
+  if (a.no_plot) return kExitOk;
   if (run_plot("sweep report", "sweep.py", {"matplotlib"}, {dir}) == PlotOutcome::kFailed) {
     return kExitFailure;
   }
   return kExitOk;
 }
 
-int run_sweep_file(const std::vector<std::string>& args) {
-  std::string path;
-  experiment::SweepOptions o;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    if (a == "--out") {
-      o.out_dir = option_value(args, i);
-    } else if (a == "--threads") {
-      const std::uint64_t t = parse_count(a, option_value(args, i));
-      if (t < 1 || t > 256) throw Error("--threads must be in [1, 256]");
-      o.threads = static_cast<int>(t);
-    } else if (a == "--shard") {
-      o.shard = experiment::parse_shard(option_value(args, i));
-    } else if (a == "--resume-any-revision") {
-      o.resume_any_revision = true;
-    } else if (a == "--checked") {
-      o.checked = true;
-    } else if (a == "--quiet") {
-      o.progress = nullptr;
-    } else if (a.rfind("--", 0) == 0) {
-      throw Error("unknown option " + a + "\n" + kUsage);
-    } else if (path.empty()) {
-      path = a;
-    } else {
-      throw Error("sweep takes one sweep file\n" + std::string(kUsage));
-    }
-  }
-  if (path.empty() || o.out_dir.empty())
-    throw Error(std::string("sweep needs SWEEP.yaml --out DIR\n") + kUsage);
+int run_sweep_file(SweepArgs a) {
+  if (a.path.empty()) throw Error("missing SWEEP.yaml (or the subcommand merge or report)");
+  if (a.options.out_dir.empty()) throw Error("missing --out DIR");
+  experiment::SweepOptions& o = a.options;
+  if (!a.shard.empty()) o.shard = experiment::parse_shard(a.shard);
+  if (a.quiet) o.progress = nullptr;
+  const std::string& path = a.path;
   const scenario::SweepFile file = scenario::load_sweep_file(path);
   o.spec_text = read_file(path);
   const experiment::MethodRegistry methods = registry();
@@ -164,18 +121,50 @@ int run_sweep_file(const std::vector<std::string>& args) {
   return s.errors > 0 ? kExitFailure : kExitOk;
 }
 
+void add_merge(CLI::App& sweep, SweepArgs& a) {
+  CLI::App* m = sweep.add_subcommand(
+      "merge", "unite the rows of shard (or interrupted) folders of one sweep into --out");
+  m->add_option("DIR", a.merge_dirs, "the folders to merge")->required();
+  m->add_option("--out", a.merge_out, "the merged folder")->required()->type_name("DIR");
+}
+
+void add_report(CLI::App& sweep, SweepArgs& a) {
+  CLI::App* r = sweep.add_subcommand("report", "tables, plots and OMPL benchmark logs of a sweep");
+  r->footer(
+      "Writes DIR/report.md, the plots DIR/*.png (python3 with matplotlib) and the OMPL\n"
+      "benchmark logs DIR/ompl/*.log (ompl_benchmark_statistics DIR/ompl/*.log -d DIR/sweep.db\n"
+      "builds Planner Arena's database).");
+  r->add_option("DIR", a.report_dir, "the sweep's folder")->required();
+  r->add_flag("--no-plot", a.no_plot, "write the report and logs only");
+}
+
 }  // namespace
 
-int run_sweep(const std::vector<std::string>& args) {
-  if (args.empty()) throw Error(std::string("sweep needs arguments\n") + kUsage);
-  if (args[0] == "--help" || args[0] == "-h") {
-    std::printf("%s", kUsage);
-    return kExitOk;
-  }
-  const std::vector<std::string> rest(args.begin() + 1, args.end());
-  if (args[0] == "merge") return run_merge(rest);
-  if (args[0] == "report") return run_report(rest);
-  return run_sweep_file(args);
+Command add_sweep(CLI::App& program) {
+  CLI::App* c = program.add_subcommand(
+      "sweep", "Monte Carlo sweeps of rearm and the baselines (run, merge, report)");
+  c->footer(kFooter);
+  c->require_subcommand(0, 1);
+  auto a = std::make_shared<SweepArgs>();
+  c->add_option("SWEEP", a->path, "the sweep file (experiments/sweeps/README.md)")
+      ->type_name("SWEEP.yaml");
+  c->add_option("--out", a->options.out_dir, "output folder (required)")->type_name("DIR");
+  c->add_option("--threads", a->options.threads, "worker threads (default 1)")
+      ->check(count_check())
+      ->check(CLI::Range(1, kMaxThreads))
+      ->type_name("T");
+  c->add_option("--shard", a->shard, "run only shard I of N")->type_name("I/N");
+  c->add_flag("--resume-any-revision", a->options.resume_any_revision,
+              "resume a DIR whose rows came from another build revision");
+  c->add_flag("--checked", a->options.checked, "check the closed loop's invariants every tick");
+  c->add_flag("--quiet", a->quiet, "no progress lines");
+  add_merge(*c, *a);
+  add_report(*c, *a);
+  return {c, [a, c] {
+            if (c->got_subcommand("merge")) return run_merge(*a);
+            if (c->got_subcommand("report")) return run_report(*a);
+            return run_sweep_file(*a);
+          }};
 }
 
 }  // namespace rearm::cli

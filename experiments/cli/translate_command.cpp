@@ -1,28 +1,35 @@
 // rearm translate [--alphabet general|actions] [--format hoa|never|dot|stats] FORMULA
 #include <cstdio>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "command.h"
-#include "core/error.h"
 #include "ltl/automaton_io.h"
 #include "ltl/parser.h"
 #include "ltl/translate.h"
+#include "options.h"
 
 namespace rearm::cli {
 namespace {
 
-constexpr const char* kUsage =
-    "usage: rearm translate [--alphabet general|actions] [--format hoa|never|dot|stats]\n"
-    "                       [--no-rewrite] [--no-simplify] [--max-states N] [--max-seconds S]\n"
-    "                       FORMULA\n\n"
+constexpr const char* kFooter =
     "Translates an LTL formula (spin or Spot spelling; action predicates move(l),\n"
-    "grasp(M), release(M,l)) into a state-based Büchi automaton (Gastin-Oddoux).\n\n"
-    "  --alphabet general   guards over all subsets of the propositions (default)\n"
-    "  --alphabet actions   one action at a time: the empty symbol plus one symbol per\n"
-    "                       proposition (the paper's Appendix I alphabet)\n"
-    "  --format hoa|never|dot|stats   output (default hoa); stats prints 'key: value' lines\n"
-    "  --max-states N, --max-seconds S   budget; exceeding it is a clean error (exit 1)\n";
+    "grasp(M), release(M,l)) into a state-based Büchi automaton (Gastin-Oddoux).\n"
+    "--alphabet general: guards over all subsets of the propositions; --alphabet actions:\n"
+    "one action at a time, the empty symbol plus one symbol per proposition (the paper's\n"
+    "Appendix I alphabet). --format stats prints 'key: value' lines.\n"
+    "Exit: 0 on success, 1 when the budget (--max-states, --max-seconds) is exceeded,\n"
+    "2 for bad usage or a malformed formula.";
+
+// s: the largest time budget (the clock's arithmetic stays far from overflow).
+constexpr double kMaxSeconds = 1e15;
+
+// The command line of `rearm translate`, parsed.
+struct TranslateArgs {
+  std::string alphabet = "general", format = "hoa", formula;
+  ltl::TranslateOptions options;
+};
 
 std::string stats_text(const ltl::TranslationStats& st) {
   std::string s;
@@ -39,77 +46,53 @@ std::string stats_text(const ltl::TranslationStats& st) {
   return s;
 }
 
-double parse_positive_number(const std::string& flag, const std::string& v) {
-  try {
-    std::size_t used = 0;
-    const double x = std::stod(v, &used);
-    if (used != v.size() || !(x > 0) || x != x || x > 1e15) throw std::invalid_argument(v);
-    return x;
-  } catch (const std::exception&) {
-    throw Error(flag + " expects a positive finite number, got '" + v + "'");
+int translate(const TranslateArgs& a) {
+  const ltl::Formula f = ltl::parse(a.formula);
+  ltl::TranslationStats st;
+  std::string out;
+  if (a.alphabet == "general") {
+    const auto nba = ltl::translate_general(f, a.options, &st);
+    if (a.format == "hoa") out = ltl::to_hoa(nba, a.formula);
+    if (a.format == "never") out = ltl::to_never_claim(nba);
+    if (a.format == "dot") out = ltl::to_dot(nba);
+  } else {
+    const auto nba = ltl::translate_actions(f, a.options, &st);
+    if (a.format == "hoa") out = ltl::to_hoa(nba, a.formula);
+    if (a.format == "never") out = ltl::to_never_claim(nba);
+    if (a.format == "dot") out = ltl::to_dot(nba);
   }
+  if (a.format == "stats") out = stats_text(st);
+  std::fputs(out.c_str(), stdout);
+  return kExitOk;
 }
 
 }  // namespace
 
-int run_translate(const std::vector<std::string>& args) {
-  std::string alphabet = "general", format = "hoa", formula;
-  bool have_formula = false;
-  ltl::TranslateOptions options;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    auto value = [&]() -> const std::string& {
-      if (i + 1 >= args.size()) throw Error(a + " expects a value");
-      return args[++i];
-    };
-    if (a == "--help" || a == "-h") {
-      std::fputs(kUsage, stdout);
-      return kExitOk;
-    } else if (a == "--alphabet") {
-      alphabet = value();
-      if (alphabet != "general" && alphabet != "actions") {
-        throw Error("--alphabet expects 'general' or 'actions', got '" + alphabet + "'");
-      }
-    } else if (a == "--format") {
-      format = value();
-      if (format != "hoa" && format != "never" && format != "dot" && format != "stats") {
-        throw Error("--format expects hoa, never, dot or stats, got '" + format + "'");
-      }
-    } else if (a == "--no-rewrite") {
-      options.rewrite = false;
-    } else if (a == "--no-simplify") {
-      options.simplify = false;
-    } else if (a == "--max-states") {
-      options.max_states = static_cast<std::size_t>(parse_positive_number(a, value()));
-    } else if (a == "--max-seconds") {
-      options.max_seconds = parse_positive_number(a, value());
-    } else if (a.size() > 1 && a[0] == '-' && a[1] == '-') {
-      throw Error("unknown option '" + a + "'\n" + kUsage);
-    } else if (have_formula) {
-      throw Error("expects one FORMULA argument (quote it), got a second: '" + a + "'");
-    } else {
-      formula = a;
-      have_formula = true;
-    }
-  }
-  if (!have_formula) throw Error(std::string("missing FORMULA\n") + kUsage);
-  const ltl::Formula f = ltl::parse(formula);
-  ltl::TranslationStats st;
-  std::string out;
-  if (alphabet == "general") {
-    const auto nba = ltl::translate_general(f, options, &st);
-    if (format == "hoa") out = ltl::to_hoa(nba, formula);
-    if (format == "never") out = ltl::to_never_claim(nba);
-    if (format == "dot") out = ltl::to_dot(nba);
-  } else {
-    const auto nba = ltl::translate_actions(f, options, &st);
-    if (format == "hoa") out = ltl::to_hoa(nba, formula);
-    if (format == "never") out = ltl::to_never_claim(nba);
-    if (format == "dot") out = ltl::to_dot(nba);
-  }
-  if (format == "stats") out = stats_text(st);
-  std::fputs(out.c_str(), stdout);
-  return kExitOk;
+Command add_translate(CLI::App& program) {
+  CLI::App* c =
+      program.add_subcommand("translate", "translate an LTL formula into a Büchi automaton");
+  c->footer(kFooter);
+  auto a = std::make_shared<TranslateArgs>();
+  c->add_option("FORMULA", a->formula, "the LTL formula (quote it)")->required();
+  c->add_option("--alphabet", a->alphabet, "general (default) or actions")
+      ->check(CLI::IsMember({"general", "actions"}));
+  c->add_option("--format", a->format, "output: hoa (default), never, dot or stats")
+      ->check(CLI::IsMember({"hoa", "never", "dot", "stats"}));
+  c->add_flag_callback(
+      "--no-rewrite", [a] { a->options.rewrite = false; }, "skip the rewriting of the formula");
+  c->add_flag_callback(
+      "--no-simplify", [a] { a->options.simplify = false; },
+      "skip the simplification of the automata");
+  c->add_option("--max-states", a->options.max_states, "state budget (exceeding it: exit 1)")
+      ->check(count_check())
+      ->check(positive_check())
+      ->type_name("N");
+  c->add_option("--max-seconds", a->options.max_seconds, "time budget (exceeding it: exit 1)")
+      ->check(finite_check())
+      ->check(positive_check())
+      ->check(CLI::Range(0.0, kMaxSeconds))
+      ->type_name("S");
+  return {c, [a] { return translate(*a); }};
 }
 
 }  // namespace rearm::cli
