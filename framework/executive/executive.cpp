@@ -49,10 +49,8 @@ void validate(const ExecutiveParams& p) {
       {"backoff_margin", p.backoff_margin},
       {"phase_timeout", p.phase_timeout}};
   for (const auto& [name, v] : positive) {
-    if (!std::isfinite(v) || !(v > 0)) {
-      throw Error(std::string("executive: ") + name + " must be finite and > 0, got " +
-                  std::to_string(v));
-    }
+    REARM_REQUIRE(std::isfinite(v) && v > 0, "executive: ", name, " must be finite and > 0, got ",
+                  v);
   }
   if (p.max_fix_rounds < 1) throw Error("executive: max_fix_rounds must be >= 1");
   if (p.max_ltl_actions < 0) throw Error("executive: max_ltl_actions must be >= 0");
@@ -69,10 +67,8 @@ void validate(const ExecutiveParams& p) {
       !std::isfinite(p.robust.withdraw_max) || p.robust.withdraw_max < 0) {
     throw Error("executive: withdraw_clearance and withdraw_max must be finite and >= 0");
   }
-  if (!std::isfinite(p.robust.rebuild_margin) || p.robust.rebuild_margin < 0) {
-    throw Error("executive: rebuild_margin must be finite and >= 0, got " +
-                std::to_string(p.robust.rebuild_margin));
-  }
+  REARM_REQUIRE(std::isfinite(p.robust.rebuild_margin) && p.robust.rebuild_margin >= 0,
+                "executive: rebuild_margin must be finite and >= 0, got ", p.robust.rebuild_margin);
   if (!std::isfinite(p.robust.back_out_step) || !(p.robust.back_out_step > 0) ||
       p.robust.max_back_outs < 0 || !std::isfinite(p.robust.contact_margin) ||
       p.robust.contact_margin < 0 || p.robust.contact_margin > p.robot_radius) {
@@ -626,6 +622,11 @@ Executive::Advance Executive::rebuild(Activity& a, double radius, const Point& c
   if (rr.status == reactive::RebuildStatus::kCenterNotFree) {
     a.built = false;
     out.center_not_free = true;  // the caller backs out (or ends stuck without back_out)
+    out.reason = rr.message;
+    return out;
+  }
+  if (rr.status == reactive::RebuildStatus::kNoDiffeomorphism) {
+    out.kind = Advance::kStuck;  // no law to follow here (the paper variant has no fallback)
     out.reason = rr.message;
     return out;
   }

@@ -21,10 +21,8 @@ Point rotate(const Point& p, double psi) {
 KinematicPlant::KinematicPlant(const perception::World& world, double robot_radius,
                                const Pose& start)
     : world_(perception::validated(world)), radius_(robot_radius), pose_(start) {
-  if (!std::isfinite(robot_radius) || !(robot_radius > 0)) {
-    throw Error("kinematic plant: robot radius must be finite and > 0, got " +
-                std::to_string(robot_radius));
-  }
+  REARM_REQUIRE(std::isfinite(robot_radius) && robot_radius > 0,
+                "kinematic plant: robot radius must be finite and > 0, got ", robot_radius);
   if (!start.x.allFinite() || !std::isfinite(start.psi)) {
     throw Error("kinematic plant: the start pose is not finite");
   }

@@ -15,10 +15,8 @@ void validate(const ProgressParams& p) {
       {"revisit_period", p.revisit_period},   {"revisit_distance", p.revisit_distance},
       {"revisit_heading", p.revisit_heading}, {"revisit_min_age", p.revisit_min_age}};
   for (const auto& [name, v] : fields) {
-    if (!std::isfinite(v) || !(v > 0)) {
-      throw Error(std::string("progress monitor: ") + name + " must be finite and > 0, got " +
-                  std::to_string(v));
-    }
+    REARM_REQUIRE(std::isfinite(v) && v > 0, "progress monitor: ", name,
+                  " must be finite and > 0, got ", v);
   }
 }
 

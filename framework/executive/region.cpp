@@ -30,7 +30,7 @@ std::vector<RegionOfInterest> validated(const std::vector<RegionOfInterest>& reg
 geometry::Point region_target(const RegionOfInterest& region) {
   const geometry::Point c = region.polygon.centroid();
   if (geometry::contains(region.polygon, c)) return c;
-  const std::vector<geometry::Polygon> triangles = geometry::triangulate(region.polygon);
+  const std::vector<geometry::Polygon> triangles = geometry::triangulate(region.polygon).or_throw();
   const geometry::Polygon* best = nullptr;
   for (const geometry::Polygon& t : triangles) {
     if (best == nullptr || t.area() > best->area()) best = &t;

@@ -15,10 +15,7 @@ executive::Pose SimPlant::pose() const {
 }
 
 void SimPlant::step(const executive::Twist& u, double dt) {
-  if (dt != dt_) {
-    throw Error("sim plant: the Box2D world steps at " + std::to_string(dt_) + " s, asked " +
-                std::to_string(dt));
-  }
+  REARM_REQUIRE(dt == dt_, "sim plant: the Box2D world steps at ", dt_, " s, asked ", dt);
   world_.step(u.v, u.omega);
 }
 

@@ -157,10 +157,11 @@ Polygon convex_hull(std::vector<Point> pts) {
 }
 
 Polygon regular_polygon(const Disk& d, int n, bool circumscribed) {
-  if (n < 3) throw Error("regular_polygon: need at least 3 vertices");
-  if (!(d.radius > 0) || !std::isfinite(d.radius) || !d.center.allFinite()) {
-    throw Error("regular_polygon: disk radius must be finite and positive, centre finite");
-  }
+  REARM_REQUIRE(n >= 3, "regular_polygon: need at least 3 vertices, got ", n);
+  REARM_REQUIRE(d.radius > 0 && std::isfinite(d.radius) && d.center.allFinite(),
+                "regular_polygon: disk radius must be finite and positive, centre finite, got "
+                "radius ",
+                d.radius, " at (", d.center.x(), ", ", d.center.y(), ")");
   const double pi = std::numbers::pi;
   const double r = circumscribed ? d.radius / std::cos(pi / n) : d.radius;
   Polygon p;
@@ -254,8 +255,9 @@ std::optional<HalfPlane> separating_half_plane(const Polygon& a, const Polygon& 
 namespace rearm::geometry {
 
 Polygon offset_convex(const Polygon& convex, double d, double miter_limit) {
-  if (!(d > 0) || !std::isfinite(d)) throw Error("offset_convex: distance must be finite and > 0");
-  if (!(miter_limit >= 1)) throw Error("offset_convex: miter limit must be >= 1");
+  REARM_REQUIRE(d > 0 && std::isfinite(d), "offset_convex: distance must be finite and > 0, got ",
+                d);
+  REARM_REQUIRE(miter_limit >= 1, "offset_convex: miter limit must be >= 1, got ", miter_limit);
   const std::size_t n = convex.size();
   Polygon out;
   out.vertices.reserve(2 * n);
@@ -293,7 +295,7 @@ Polygon offset_convex(const Polygon& convex, double d, double miter_limit) {
 
 namespace rearm::geometry {
 
-std::vector<Polygon> triangulate(const Polygon& simple) {
+Outcome<std::vector<Polygon>> triangulate(const Polygon& simple) {
   std::vector<Point> v = simple.vertices;
   std::vector<Polygon> out;
   auto orient = [](const Point& a, const Point& b, const Point& c) {
@@ -329,7 +331,7 @@ std::vector<Polygon> triangulate(const Polygon& simple) {
         best_q = q;
       }
     }
-    if (best == n) throw Error("triangulate: no ear found (the polygon is not simple)");
+    if (best == n) return Failure{"triangulate: no ear found (the polygon is not simple)"};
     out.push_back(Polygon{{v[(best + n - 1) % n], v[best], v[(best + 1) % n]}});
     v.erase(v.begin() + static_cast<std::ptrdiff_t>(best));
   }
@@ -382,7 +384,8 @@ std::optional<RayHit> first_hit(const Polygon& q, std::size_t i, const Point& d)
 
 }  // namespace
 
-std::vector<Polygon> decompose_by_extensions(const Polygon& simple, std::size_t max_pieces) {
+Outcome<std::vector<Polygon>> decompose_by_extensions(const Polygon& simple,
+                                                      std::size_t max_pieces) {
   std::vector<Polygon> stack{simple};
   std::vector<Polygon> out;
   while (!stack.empty()) {
@@ -436,12 +439,12 @@ std::vector<Polygon> decompose_by_extensions(const Polygon& simple, std::size_t 
       }
     }
     if (!split) {
-      throw Error(
-          "decompose_by_extensions: no extension cut splits a piece (is the polygon "
-          "simple?)");
+      return Failure{
+          "decompose_by_extensions: no extension cut splits a piece (is the polygon simple?)"};
     }
     if (out.size() + stack.size() + 2 > max_pieces) {
-      throw Error("decompose_by_extensions: more than " + std::to_string(max_pieces) + " pieces");
+      return Failure{"decompose_by_extensions: more than " + std::to_string(max_pieces) +
+                     " pieces"};
     }
     stack.push_back(std::move(a));
     stack.push_back(std::move(b));

@@ -88,13 +88,15 @@ Polygon offset_convex(const Polygon& convex, double d, double miter_limit = 2.0)
 // the first boundary point hit. Orthogonal shapes (L, U, T, staircase, cross) fall apart into
 // rectangles, with no sharp angle a diagonal partition makes. A cut's end point is a new vertex
 // shared bit for bit by both sides; pieces keep their 180° vertices. The polygon must be simple,
-// counter-clockwise, without collinear vertices; throws rearm::Error when a cut finds no
-// boundary (not simple) or after `max_pieces` pieces.
-std::vector<Polygon> decompose_by_extensions(const Polygon& simple, std::size_t max_pieces = 256);
+// counter-clockwise, without collinear vertices. A failure (a value: the caller tries another
+// decomposition) when no cut splits a piece (the polygon is not simple enough) or past
+// `max_pieces` pieces.
+Outcome<std::vector<Polygon>> decompose_by_extensions(const Polygon& simple,
+                                                      std::size_t max_pieces = 256);
 
 // Ear-clipping triangulation of a simple counter-clockwise polygon without collinear
 // vertices: n − 2 triangles whose vertices are the input vertices (bit for bit), so shared
-// edges are exact. Throws rearm::Error when no ear is found (the polygon is not simple).
-std::vector<Polygon> triangulate(const Polygon& simple);
+// edges are exact. A failure when no ear is found (the polygon is not simple).
+Outcome<std::vector<Polygon>> triangulate(const Polygon& simple);
 
 }  // namespace rearm::geometry

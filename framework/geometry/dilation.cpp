@@ -35,9 +35,7 @@ namespace {
 constexpr int kMinDiskSides = 8;
 
 void check_radius(double r, const char* what) {
-  if (!std::isfinite(r) || !(r > 0)) {
-    throw Error(std::string(what) + ": radius must be finite and > 0, got " + std::to_string(r));
-  }
+  REARM_REQUIRE(std::isfinite(r) && r > 0, what, ": radius must be finite and > 0, got ", r);
 }
 
 // Smallest even n >= kMinDiskSides with 1/cos(π/n) − 1 <= kMaxDilationError (the relative
@@ -158,10 +156,8 @@ RegionSet dilate_round_exact(const Polygon& p, double r) {
 
 RegionSet dilate_miter(const Polygon& p, double r, double limit_factor) {
   check_radius(r, "dilate_miter");
-  if (!std::isfinite(limit_factor) || !(limit_factor >= 1)) {
-    throw Error("dilate_miter: the miter limit must be finite and >= 1, got " +
-                std::to_string(limit_factor));
-  }
+  REARM_REQUIRE(std::isfinite(limit_factor) && limit_factor >= 1,
+                "dilate_miter: the miter limit must be finite and >= 1, got ", limit_factor);
   const Polygon q = validated(p, "dilate_miter polygon");  // counter-clockwise
   const std::size_t n = q.size();
   auto cross = [](const Point& a, const Point& b) { return a.x() * b.y() - a.y() * b.x(); };
@@ -200,9 +196,7 @@ RegionSet dilate_miter(const Polygon& p, double r, double limit_factor) {
 Polygon disk_polygon(const Disk& d) { return regular_polygon(d, kDiskPolygonSides, true); }
 
 RegionSet erode(const Polygon& workspace, double r) {
-  if (!std::isfinite(r) || !(r > 0)) {
-    throw Error("erode: distance must be finite and > 0, got " + std::to_string(r));
-  }
+  REARM_REQUIRE(std::isfinite(r) && r > 0, "erode: distance must be finite and > 0, got ", r);
   const Polygon w = validated(workspace, "workspace");
   std::vector<Polygon> walls;
   for (std::size_t i = 0, n = w.size(); i < n; ++i) {

@@ -7,6 +7,8 @@
 #include <Eigen/Core>
 #include <vector>
 
+#include "core/outcome.h"
+
 namespace rearm::geometry {
 
 using Point = Eigen::Vector2d;
@@ -39,6 +41,9 @@ using RegionSet = std::vector<Region>;
 // simple (no self-intersection, exact predicates), non-zero area. Returns it in
 // counter-clockwise order. Throws rearm::Error naming `what` and the defect.
 Polygon validated(const Polygon& p, const char* what = "polygon");
+// The same check as a value, for a search that rejects candidate polygons (a random instance's
+// obstacles): the polygon in counter-clockwise order, or the defect naming `what`.
+Outcome<Polygon> checked_polygon(const Polygon& p, const char* what = "polygon");
 
 // Point in polygon / region (boundary counts as inside), exact predicates. The polygon is
 // assumed valid (validated()); a non-finite point or vertex throws rearm::Error.

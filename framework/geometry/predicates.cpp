@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "core/outcome.h"
 #include "geometry/polygon.h"
 
 namespace rearm::geometry {
@@ -25,6 +26,10 @@ bool finite(const Point& v) { return std::isfinite(v.x()) && std::isfinite(v.y()
 
 [[noreturn]] void fail(const char* what, const std::string& defect) {
   throw Error(std::string(what) + ": " + defect);
+}
+
+Failure defect(const char* what, const std::string& text) {
+  return Failure{std::string(what) + ": " + text};
 }
 
 std::string show(const Point& v) {
@@ -94,19 +99,19 @@ void demand_finite(const Region& r) {
 
 }  // namespace
 
-Polygon validated(const Polygon& p, const char* what) {
+Outcome<Polygon> checked_polygon(const Polygon& p, const char* what) {
   const std::size_t n = p.size();
-  if (n < 3) fail(what, "needs at least 3 vertices, got " + std::to_string(n));
+  if (n < 3) return defect(what, "needs at least 3 vertices, got " + std::to_string(n));
   for (std::size_t i = 0; i < n; ++i) {
     if (!finite(p.vertices[i])) {
-      fail(what, "vertex " + std::to_string(i) + " is not finite " + show(p.vertices[i]));
+      return defect(what, "vertex " + std::to_string(i) + " is not finite " + show(p.vertices[i]));
     }
   }
   for (std::size_t i = 0; i < n; ++i) {
     const std::size_t j = (i + 1) % n;
     if (p.vertices[i] == p.vertices[j]) {
-      fail(what, "zero-length edge: vertices " + std::to_string(i) + " and " + std::to_string(j) +
-                     " coincide at " + show(p.vertices[i]));
+      return defect(what, "zero-length edge: vertices " + std::to_string(i) + " and " +
+                              std::to_string(j) + " coincide at " + show(p.vertices[i]));
     }
   }
   const std::vector<EPoint> pts = to_epick(p);
@@ -116,9 +121,10 @@ Polygon validated(const Polygon& p, const char* what) {
   for (std::size_t i = 2; i < n && collinear; ++i) {
     collinear = CGAL::collinear(pts[0], pts[1], pts[i]);
   }
-  if (collinear) fail(what, "zero area (all " + std::to_string(n) + " vertices collinear)");
+  if (collinear)
+    return defect(what, "zero area (all " + std::to_string(n) + " vertices collinear)");
   if (!CGAL::is_simple_2(pts.begin(), pts.end(), Epick())) {
-    fail(what, "not simple (edges cross or touch away from their shared vertices)");
+    return defect(what, "not simple (edges cross or touch away from their shared vertices)");
   }
   Polygon out = p;
   // Simple and not collinear, so the orientation is strictly clockwise or counter-clockwise.
@@ -126,6 +132,10 @@ Polygon validated(const Polygon& p, const char* what) {
     std::reverse(out.vertices.begin(), out.vertices.end());
   }
   return out;
+}
+
+Polygon validated(const Polygon& p, const char* what) {
+  return checked_polygon(p, what).or_throw();
 }
 
 bool contains(const Polygon& p, const Point& x) {

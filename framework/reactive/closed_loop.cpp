@@ -11,13 +11,15 @@ namespace rearm::reactive {
 ClosedLoopResult run_closed_loop(ReactiveController& controller, const Pose& start,
                                  const Point& goal, const MapUpdate& sense,
                                  const Clearance& clearance, const ClosedLoopOptions& o) {
-  if (!(o.dt > 0) || !std::isfinite(o.dt)) throw Error("closed loop: dt must be finite and > 0");
-  if (!(o.max_time > 0) || !std::isfinite(o.max_time)) {
-    throw Error("closed loop: max_time must be finite and > 0");
-  }
-  if (!(o.goal_tolerance > 0)) throw Error("closed loop: goal_tolerance must be > 0");
-  if (!(o.radius > 0)) throw Error("closed loop: radius must be > 0");
-  if (!(o.carried_radius >= 0)) throw Error("closed loop: carried_radius must be >= 0");
+  REARM_REQUIRE(o.dt > 0 && std::isfinite(o.dt), "closed loop: dt must be finite and > 0, got ",
+                o.dt);
+  REARM_REQUIRE(o.max_time > 0 && std::isfinite(o.max_time),
+                "closed loop: max_time must be finite and > 0, got ", o.max_time);
+  REARM_REQUIRE(o.goal_tolerance > 0, "closed loop: goal_tolerance must be > 0, got ",
+                o.goal_tolerance);
+  REARM_REQUIRE(o.radius > 0, "closed loop: radius must be > 0, got ", o.radius);
+  REARM_REQUIRE(o.carried_radius >= 0, "closed loop: carried_radius must be >= 0, got ",
+                o.carried_radius);
   if (!start.x.allFinite() || !std::isfinite(start.psi) || !goal.allFinite()) {
     throw Error("closed loop: start pose and goal must be finite");
   }

@@ -385,11 +385,11 @@ std::optional<Tree> tree_over(const std::vector<Polygon>& P, const FamiliarCompo
 const Tree* Candidates::at(std::size_t k) {
   if (triangulation_pending && k == triangulation_at) {
     triangulation_pending = false;
-    try {
-      if (auto t = tree_over(geometry::triangulate(comp.polygon), comp, sliver_area)) {
+    const Outcome<std::vector<Polygon>> triangles = geometry::triangulate(comp.polygon);
+    if (triangles) {  // else not simple enough to triangulate: no such candidate
+      if (auto t = tree_over(*triangles, comp, sliver_area)) {
         trees.insert(trees.begin() + static_cast<std::ptrdiff_t>(k), std::move(*t));
       }
-    } catch (const Error&) {
     }
   }
   return k < trees.size() ? &trees[k] : nullptr;
@@ -411,10 +411,9 @@ Candidates candidate_trees(const FamiliarComponent& comp, double sliver_area) {
   auto add = [&](const std::vector<Polygon>& P) {
     if (auto t = tree_over(P, comp, sliver_area)) out.trees.push_back(std::move(*t));
   };
-  try {
-    add(usable(geometry::decompose_by_extensions(comp.polygon)));
-  } catch (const Error&) {
-    // not simple enough for extension cuts: the other decompositions remain
+  // Not simple enough for extension cuts (a failure): the other decompositions remain.
+  if (Outcome<std::vector<Polygon>> cuts = geometry::decompose_by_extensions(comp.polygon)) {
+    add(usable(std::move(*cuts)));
   }
   add(usable(geometry::convex_partition(comp.polygon)));
   out.triangulation_at = out.trees.size();
@@ -498,8 +497,8 @@ Adjacency adjacency(const Polygon& piece, int edge) {
 
 // §3.3: ray from the piece vertex farthest from the adjacency edge through its midpoint into the
 // (admissible part of the) parent; the centre halfway to the exit.
-Point child_center(const Polygon& piece, const Polygon& parent, const Adjacency& a,
-                   std::size_t ci) {
+Outcome<Point> child_center(const Polygon& piece, const Polygon& parent, const Adjacency& a,
+                            std::size_t ci) {
   const Vector2d t = (a.v1 - a.v0).normalized();
   const Vector2d inward(-t.y(), t.x());  // into the piece (left of v0→v1)
   Point far = piece.vertices.front();
@@ -510,12 +509,11 @@ Point child_center(const Polygon& piece, const Polygon& parent, const Adjacency&
   const Polygon admissible = geometry::clip(geometry::clip(parent, a.h_prev), a.h_next);
   const auto iv = geometry::line_interval(admissible, a.mid, dir);
   if (!iv || iv->hi <= kMinCenterDepth) {
-    throw Error(
-        "diffeomorphism: no admissible purge centre for a convex piece of "
-        "familiar component " +
-        std::to_string(ci));
+    return Failure{
+        "diffeomorphism: no admissible purge centre for a convex piece of familiar component " +
+        std::to_string(ci)};
   }
-  return a.mid + (iv->hi / 2) * dir;
+  return Point(a.mid + (iv->hi / 2) * dir);
 }
 
 // Is the line of the half-plane through the lid's midpoint (the lid's own edge of F_e)?
@@ -564,24 +562,26 @@ Polygon attached_collar(const Polygon& shape, const Purge& pu, const Adjacency& 
 }
 
 // §3.4: the collar avoids every obstacle in `present`: each overlapping one is cut off by a line
-// separating it from A; the collar must still contain the piece.
-void avoid(Polygon& collar, const Polygon& shape, const Polygon& piece,
-           const std::vector<const Polygon*>& present, std::size_t ci) {
+// separating it from A; the collar must still contain the piece. The cut collar, or why there
+// is none.
+Outcome<Polygon> avoid(Polygon collar, const Polygon& shape, const Polygon& piece,
+                       const std::vector<const Polygon*>& present, std::size_t ci) {
   for (const Polygon* blocker : present) {
     if (!geometry::convex_overlap(collar, *blocker)) continue;
     const auto cut = geometry::separating_half_plane(shape, *blocker, 1e-9);
     if (!cut) {
-      throw Error("diffeomorphism: a convex piece of familiar component " + std::to_string(ci) +
-                  " overlaps another obstacle; obstacles must be consolidated first");
+      return Failure{"diffeomorphism: a convex piece of familiar component " + std::to_string(ci) +
+                     " overlaps another obstacle; obstacles must be consolidated first"};
     }
     collar = geometry::clip(collar, *cut);
   }
   for (const Point& v : piece.vertices) {
     if (!geometry::convex_contains(collar, v, kCollarContainsTolerance)) {
-      throw Error("diffeomorphism: the collar of a convex piece of familiar component " +
-                  std::to_string(ci) + " cannot contain the piece (touching obstacles?)");
+      return Failure{"diffeomorphism: the collar of a convex piece of familiar component " +
+                     std::to_string(ci) + " cannot contain the piece (touching obstacles?)"};
     }
   }
+  return collar;
 }
 
 // §3.3: free root: c = vertex mean, model disk of radius 0.8·dist(c, ∂root); its collar is the
@@ -601,10 +601,11 @@ Polygon free_root(Purge& pu, const Polygon& piece, const Polygon& enclosing,
 }
 
 // The purge of piece k (the i-th in purge order) of component ci over `tree` (§3.3–3.7);
-// first_purge is the index of the component's first purge. Throws rearm::Error when a centre or
-// a collar cannot be built.
-Purge purge_of(const PurgeBuild& b, std::size_t ci, const Tree& tree, const std::vector<int>& rank,
-               int i, int first_purge, std::vector<Disk>& disks) {
+// first_purge is the index of the component's first purge. A failure when a centre or a collar
+// cannot be built (the caller tries the component's next candidate tree).
+Outcome<Purge> purge_of(const PurgeBuild& b, std::size_t ci, const Tree& tree,
+                        const std::vector<int>& rank, int i, int first_purge,
+                        std::vector<Disk>& disks) {
   const int k = tree.order[i];
   const Node& node = tree.nodes[k];
   const Polygon& piece = tree.pieces[k];
@@ -619,7 +620,9 @@ Purge purge_of(const PurgeBuild& b, std::size_t ci, const Tree& tree, const std:
   if (node.parent >= 0 || b.m.familiar[ci].lid) {
     const Adjacency a = adjacency(piece, node.edge);
     if (node.parent >= 0) {
-      pu.center = child_center(piece, tree.pieces[node.parent], a, ci);
+      const Outcome<Point> center = child_center(piece, tree.pieces[node.parent], a, ci);
+      if (!center) return Failure{center.reason()};
+      pu.center = *center;
       pu.kind = Purge::Kind::kChild;
       pu.parent = first_purge + rank[node.parent];
     } else {
@@ -643,23 +646,29 @@ Purge purge_of(const PurgeBuild& b, std::size_t ci, const Tree& tree, const std:
   for (const Blocker& blocker : b.blockers) {
     if (blocker.component != static_cast<int>(ci)) present.push_back(blocker.poly);
   }
-  avoid(collar, shape, piece, present, ci);
-  pu.collar = collar;
+  Outcome<Polygon> cut = avoid(std::move(collar), shape, piece, present, ci);
+  if (!cut) return Failure{cut.reason()};
+  pu.collar = std::move(*cut);
   pu.beta_planes = edge_planes(piece);
-  pu.gamma_planes = edge_planes(collar);
+  pu.gamma_planes = edge_planes(pu.collar);
   pu.collar_box = Eigen::AlignedBox2d();
-  for (const Point& v : collar.vertices) pu.collar_box.extend(v);
+  for (const Point& v : pu.collar.vertices) pu.collar_box.extend(v);
   return pu;
 }
 
-// The purges of component ci over one candidate tree, in purge order.
-std::vector<Purge> purges_of(const PurgeBuild& b, std::size_t ci, const Tree& tree, int first_purge,
-                             std::vector<Disk>& disks) {
+// The purges of component ci over one candidate tree, in purge order, or why one of them cannot
+// be built.
+Outcome<std::vector<Purge>> purges_of(const PurgeBuild& b, std::size_t ci, const Tree& tree,
+                                      int first_purge, std::vector<Disk>& disks) {
   const int n = static_cast<int>(tree.pieces.size());
   std::vector<int> rank(n);
   for (int i = 0; i < n; ++i) rank[tree.order[i]] = i;
   std::vector<Purge> out;
-  for (int i = 0; i < n; ++i) out.push_back(purge_of(b, ci, tree, rank, i, first_purge, disks));
+  for (int i = 0; i < n; ++i) {
+    Outcome<Purge> pu = purge_of(b, ci, tree, rank, i, first_purge, disks);
+    if (!pu) return Failure{pu.reason()};
+    out.push_back(std::move(*pu));
+  }
   return out;
 }
 
@@ -667,6 +676,11 @@ std::vector<Purge> purges_of(const PurgeBuild& b, std::size_t ci, const Tree& tr
 
 Diffeomorphism Diffeomorphism::build(const MappedSpace& m, const DiffeoParams& params,
                                      DecompositionCache& cache) {
+  return try_build(m, params, cache).or_throw();
+}
+
+Outcome<Diffeomorphism> Diffeomorphism::try_build(const MappedSpace& m, const DiffeoParams& params,
+                                                  DecompositionCache& cache) {
   if (!cache.impl_) cache.impl_ = std::make_unique<DecompositionCache::Impl>();  // moved from
   validate(params);
   if (m.enclosing.size() < 3 || !m.enclosing.is_convex()) {
@@ -695,8 +709,8 @@ Diffeomorphism Diffeomorphism::build(const MappedSpace& m, const DiffeoParams& p
     const Tree* first = candidates[ci]->at(0);
     if (first == nullptr) {
       if (comp.polygon.area() <= params.sliver_area) continue;  // a sliver: nothing to purge
-      throw Error("diffeomorphism: familiar component " + std::to_string(ci) +
-                  " admits no purging tree (its convex pieces are not edge-connected)");
+      return Failure{"diffeomorphism: familiar component " + std::to_string(ci) +
+                     " admits no purging tree (its convex pieces are not edge-connected)"};
     }
     pieces[ci] = first->pieces;  // what other components' collars avoid
   }
@@ -719,20 +733,19 @@ Diffeomorphism Diffeomorphism::build(const MappedSpace& m, const DiffeoParams& p
     const Tree* tree = nullptr;
     for (std::size_t k = 0; (tree = candidates[ci]->at(k)) != nullptr; ++k) {
       std::vector<Disk> disks;
-      std::vector<Purge> purges;
-      try {
-        purges = purges_of(b, ci, *tree, static_cast<int>(d.purges_.size()), disks);
-      } catch (const Error& e) {
-        failure = e.what();
+      Outcome<std::vector<Purge>> purges =
+          purges_of(b, ci, *tree, static_cast<int>(d.purges_.size()), disks);
+      if (!purges) {
+        failure = purges.reason();
         continue;
       }
-      d.purges_.insert(d.purges_.end(), std::make_move_iterator(purges.begin()),
-                       std::make_move_iterator(purges.end()));
+      d.purges_.insert(d.purges_.end(), std::make_move_iterator(purges->begin()),
+                       std::make_move_iterator(purges->end()));
       root_disks.insert(root_disks.end(), disks.begin(), disks.end());
       built = true;
       break;
     }
-    if (!built && candidates[ci]->at(0) != nullptr) throw Error(failure);
+    if (!built && candidates[ci]->at(0) != nullptr) return Failure{failure};
   }
   d.model_.disks = root_disks;
   d.model_.disks.insert(d.model_.disks.end(), m.movable.begin(), m.movable.end());

@@ -29,6 +29,7 @@
 #include <memory>
 #include <vector>
 
+#include "core/outcome.h"
 #include "geometry/convex.h"
 #include "reactive/mapped_space.h"
 #include "reactive/model_space.h"
@@ -100,6 +101,12 @@ class Diffeomorphism {
   // The same, the components' candidate trees taken from (and added to) `cache`.
   static Diffeomorphism build(const MappedSpace& m, const DiffeoParams& params,
                               DecompositionCache& cache);
+  // The same with the expected failure as a value: a component that admits no purging tree,
+  // or none of whose candidate trees admits every centre and collar (obstacles too close to
+  // separate, §3.4); the reactive controller then falls back to convex pieces. Invalid
+  // parameters or a non-convex enclosing freespace are bad input: rearm::Error.
+  static Outcome<Diffeomorphism> try_build(const MappedSpace& m, const DiffeoParams& params,
+                                           DecompositionCache& cache);
 
   // h, Dh, D²h at x. x must be a finite point of the freespace (not checked on this path;
   // inside an obstacle the value is defined but meaningless). No allocation.

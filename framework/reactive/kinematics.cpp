@@ -12,9 +12,8 @@ namespace {
 
 void check_step(const Point& x, double dt, const char* what) {
   if (!x.allFinite()) throw Error(std::string(what) + ": position is not finite");
-  if (!std::isfinite(dt) || dt < 0) {
-    throw Error(std::string(what) + ": step dt must be finite and non-negative");
-  }
+  REARM_REQUIRE(std::isfinite(dt) && dt >= 0, what,
+                ": step dt must be finite and non-negative, got ", dt);
 }
 
 // sin(a)/a, continuous at 0.

@@ -50,11 +50,12 @@ HalfPlane bisector(const Point& y, const Point& p, double d) {
 void local_freespace(const ModelSpace& m, const Point& y, double sensor_range, Polygon& out,
                      Polygon& scratch, int sides) {
   if (!y.allFinite()) throw Error("local_freespace: point y is not finite");
-  if (!std::isfinite(sensor_range) || !(sensor_range > 0)) {
-    throw Error("local_freespace: sensing range must be finite and positive");
-  }
-  if (sides < 3) throw Error("local_freespace: the sensing polygon needs at least 3 sides");
-  if (m.boundary.size() < 3) throw Error("local_freespace: model boundary has < 3 vertices");
+  REARM_REQUIRE(std::isfinite(sensor_range) && sensor_range > 0,
+                "local_freespace: sensing range must be finite and positive, got ", sensor_range);
+  REARM_REQUIRE(sides >= 3, "local_freespace: the sensing polygon needs at least 3 sides, got ",
+                sides);
+  REARM_REQUIRE(m.boundary.size() >= 3, "local_freespace: model boundary has < 3 vertices (",
+                m.boundary.size(), ")");
 
   // Start from the inscribed sensing polygon, written straight into `out`.
   out.vertices.clear();

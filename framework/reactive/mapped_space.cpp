@@ -97,10 +97,8 @@ DilationCache::DilationCache(double miter_limit) : miter_limit_(miter_limit) {
 }
 
 void DilationCache::set_miter_limit(double limit) {
-  if (!std::isfinite(limit) || !(limit >= 1)) {
-    throw Error("dilation cache: the miter limit must be finite and >= 1, got " +
-                std::to_string(limit));
-  }
+  REARM_REQUIRE(std::isfinite(limit) && limit >= 1,
+                "dilation cache: the miter limit must be finite and >= 1, got ", limit);
   if (limit != miter_limit_) miters_.clear();
   miter_limit_ = limit;
 }
@@ -183,9 +181,8 @@ Dilated dilate_obstacles(const SemanticInput& in, double radius, DilationCache& 
     const Disk& d = in.movable[i];
     const std::string what = "movable object " + std::to_string(i);
     check_point(d.center, what + " centre");
-    if (!std::isfinite(d.radius) || !(d.radius > 0)) {
-      throw Error(what + ": radius must be finite and > 0, got " + std::to_string(d.radius));
-    }
+    REARM_REQUIRE(std::isfinite(d.radius) && d.radius > 0, what,
+                  ": radius must be finite and > 0, got ", d.radius);
     out.add(geometry::to_set(
         geometry::disk_polygon(Disk{d.center, d.radius + radius + kContactSlack})));
     out.sources.push_back({Kind::kMovable, i, d.center});
@@ -309,10 +306,8 @@ void add_pockets(MappedSpace& m, const Dilated& d, double scale, double sliver) 
 
 MappedSpace build_full(const SemanticInput& in, double radius, const Point& robot,
                        DilationCache& cache, LoneFragments& lone) {
-  if (!std::isfinite(radius) || !(radius > 0)) {
-    throw Error("mapped space: dilation radius must be finite and > 0, got " +
-                std::to_string(radius));
-  }
+  REARM_REQUIRE(std::isfinite(radius) && radius > 0,
+                "mapped space: dilation radius must be finite and > 0, got ", radius);
   check_point(robot, "mapped space: robot position");
   // The workspace eroded by the radius (conservative), minus the dilated obstacles (§2).
   const RegionSet eroded = cache.eroded(in.workspace, radius);  // a copy: the cache grows below

@@ -16,9 +16,8 @@ namespace {
 constexpr double kHalfPi = std::numbers::pi / 2;
 
 void positive(double v, const char* name) {
-  if (!std::isfinite(v) || !(v > 0)) {
-    throw Error(std::string("NavParams: ") + name + " must be finite and positive");
-  }
+  REARM_REQUIRE(std::isfinite(v) && v > 0, "NavParams: ", name,
+                " must be finite and positive, got ", v);
 }
 
 void check_inputs(const DiffeoEval& at, const Point& y_goal, const char* what) {
@@ -60,10 +59,11 @@ void validate(const NavParams& p) {
   positive(p.v_max, "v_max");
   positive(p.omega_max, "omega_max");
   positive(p.sensor_range, "sensor_range");
-  if (p.sensing_sides < 3) throw Error("NavParams: sensing_sides must be at least 3");
-  if (!std::isfinite(p.singular_tolerance) || p.singular_tolerance < 0) {
-    throw Error("NavParams: singular_tolerance must be finite and non-negative");
-  }
+  REARM_REQUIRE(p.sensing_sides >= 3, "NavParams: sensing_sides must be at least 3, got ",
+                p.sensing_sides);
+  REARM_REQUIRE(std::isfinite(p.singular_tolerance) && p.singular_tolerance >= 0,
+                "NavParams: singular_tolerance must be finite and non-negative, got ",
+                p.singular_tolerance);
 }
 
 Twist limit_common(const Twist& u, double v_max, double omega_max) {
@@ -91,7 +91,7 @@ Twist unicycle_command(const ModelSpace& m, const DiffeoEval& at_x, double psi, 
   constexpr const char* kWhat = "unicycle_command";
   validate(p);
   check_inputs(at_x, y_goal, kWhat);
-  if (!std::isfinite(psi)) throw Error("unicycle_command: heading is not finite");
+  REARM_REQUIRE(std::isfinite(psi), "unicycle_command: heading is not finite, got ", psi);
   const Eigen::Matrix2d& J = at_x.J;
   check_regular(J, p, kWhat);
 
@@ -181,10 +181,9 @@ Point pair_center(const Point& x, double psi, double rho_i) {
 
 Twist pair_command(const ModelSpace& m, const DiffeoEval& at_xc, double psi, double rho_i,
                    const Point& y_goal, const NavParams& p, NavScratch& s) {
-  if (!std::isfinite(psi)) throw Error("pair_command: heading is not finite");
-  if (!std::isfinite(rho_i) || !(rho_i > 0)) {
-    throw Error("pair_command: object radius rho_i must be finite and positive");
-  }
+  REARM_REQUIRE(std::isfinite(psi), "pair_command: heading is not finite, got ", psi);
+  REARM_REQUIRE(std::isfinite(rho_i) && rho_i > 0,
+                "pair_command: object radius rho_i must be finite and positive, got ", rho_i);
   const Point uc = pulled_back(m, at_xc, y_goal, p, s, "pair_command");
   // T(ψ)⁻¹ = (1/ρ_i) [[ρ_i cos ψ, ρ_i sin ψ], [−sin ψ, cos ψ]] (det T = ρ_i).
   const double c = std::cos(psi);

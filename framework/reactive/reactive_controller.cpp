@@ -78,29 +78,25 @@ RebuildResult ReactiveController::try_rebuild(const SemanticInput& map, double r
                 ") is not in the freespace component of the robot (inside an obstacle, or "
                 "disconnected from the robot)"};
   }
-  std::unique_ptr<Diffeomorphism> diffeo;
   if (fallback_ && convexify_all_)
     convexify(mapped, partitions_, [](const FamiliarComponent&) { return true; });
-  try {
-    diffeo = std::make_unique<Diffeomorphism>(
-        Diffeomorphism::build(mapped, diffeo_params_, decompositions_));
-  } catch (const Error&) {
-    if (!fallback_) throw;
+  Outcome<Diffeomorphism> diffeo =
+      Diffeomorphism::try_build(mapped, diffeo_params_, decompositions_);
+  if (!diffeo && fallback_) {
+    // The fallback: the curved components as convex pieces, then every component.
     ++fallbacks_;
     convexify(mapped, partitions_, [](const FamiliarComponent& c) { return c.curved; });
-    try {
-      diffeo = std::make_unique<Diffeomorphism>(
-          Diffeomorphism::build(mapped, diffeo_params_, decompositions_));
-    } catch (const Error&) {
+    diffeo = Diffeomorphism::try_build(mapped, diffeo_params_, decompositions_);
+    if (!diffeo) {
       convexify(mapped, partitions_, [](const FamiliarComponent&) { return true; });
-      diffeo = std::make_unique<Diffeomorphism>(
-          Diffeomorphism::build(mapped, diffeo_params_, decompositions_));
+      diffeo = Diffeomorphism::try_build(mapped, diffeo_params_, decompositions_);
     }
   }
+  if (!diffeo) return {RebuildStatus::kNoDiffeomorphism, diffeo.reason()};
   if (fallback_ && convexify_all_) ++fallbacks_;
   model_goal_ = diffeo->map(target);
   mapped_ = std::move(mapped);
-  diffeo_ = std::move(diffeo);
+  diffeo_ = std::make_unique<Diffeomorphism>(std::move(*diffeo));
   goal_ = target;
   ++rebuilds_;
   return {};

@@ -28,6 +28,9 @@ enum class RebuildStatus {
   kOk,
   kCenterNotFree,  // the robot (or pair) centre is not in the freespace
   kGoalNotFree,    // the goal is inside an obstacle or in another freespace component
+  // No purging diffeomorphism (Diffeomorphism::try_build's failure), with the convex fallback
+  // off (the paper variant) or after its last stage (every component convexified).
+  kNoDiffeomorphism,
 };
 
 struct RebuildResult {

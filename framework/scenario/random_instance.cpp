@@ -890,11 +890,8 @@ class Generator {
                         vertex_depth(q.polygon, p, o.box) >= kMinOverlapDepth;
       if (!deep && closer_than(p, q.polygon, l_.passage)) return false;
     }
-    try {
-      if (geometry::validated(p, "obstacle").vertices != p.vertices) return false;
-    } catch (const Error&) {
-      return false;
-    }
+    const Outcome<Polygon> valid = geometry::checked_polygon(p, "obstacle");
+    if (!valid || valid->vertices != p.vertices) return false;
     return !o.unknown || p.is_convex();
   }
 

@@ -386,10 +386,8 @@ void TopologyCache::clear() {
 }
 
 void TopologyCache::set_miter_limit(double limit) {
-  if (!std::isfinite(limit) || !(limit >= 1)) {
-    throw Error("topology cache: the miter limit must be finite and >= 1, got " +
-                std::to_string(limit));
-  }
+  REARM_REQUIRE(std::isfinite(limit) && limit >= 1,
+                "topology cache: the miter limit must be finite and >= 1, got ", limit);
   if (!impl_) impl_ = std::make_unique<Impl>();
   if (limit == impl_->miter_limit) return;
   clear();
@@ -508,9 +506,8 @@ TopologyInput make_input(const geometry::Polygon& workspace,
                          const std::vector<geometry::Disk>& objects, double radius,
                          geometry::Point x, geometry::Point target,
                          std::optional<std::size_t> carried, TopologyCache& cache) {
-  if (!std::isfinite(radius) || !(radius > 0)) {
-    throw Error("topology: dilation radius must be finite and > 0, got " + std::to_string(radius));
-  }
+  REARM_REQUIRE(std::isfinite(radius) && radius > 0,
+                "topology: dilation radius must be finite and > 0, got ", radius);
   check_point(x, "robot position x");
   check_point(target, "target x*");
   if (carried && *carried >= objects.size()) {

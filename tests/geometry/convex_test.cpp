@@ -425,7 +425,7 @@ TEST(Convex, TriangulationTilesTheStar) {
   for (int trial = 0; trial < static_cast<int>(test_support::scaled(200, 10)); ++trial) {
     const Polygon p = remove_collinear(
         test_support::random_star(rng, 5 + static_cast<int>(rng.index(20)), 1.0, 3.0));
-    const std::vector<Polygon> t = triangulate(p);
+    const std::vector<Polygon> t = triangulate(p).or_throw();
     ASSERT_EQ(t.size(), p.size() - 2);
     double area = 0;
     for (const Polygon& tri : t) {
@@ -451,7 +451,7 @@ TEST(Convex, ExtensionDecompositionTilesWithConvexPieces) {
   for (int trial = 0; trial < static_cast<int>(test_support::scaled(200, 10)); ++trial) {
     const Polygon p = remove_collinear(
         test_support::random_star(rng, 5 + static_cast<int>(rng.index(15)), 1.0, 3.0));
-    const std::vector<Polygon> pieces = decompose_by_extensions(p);
+    const std::vector<Polygon> pieces = decompose_by_extensions(p).or_throw();
     double area = 0;
     for (const Polygon& q : pieces) {
       EXPECT_EQ(reflex_count(q), 0) << "trial " << trial;
@@ -470,7 +470,7 @@ TEST(Convex, ExtensionDecompositionTilesWithConvexPieces) {
   const Polygon cross_shape{{Point(1, 0), Point(2, 0), Point(2, 1), Point(3, 1), Point(3, 2),
                              Point(2, 2), Point(2, 3), Point(1, 3), Point(1, 2), Point(0, 2),
                              Point(0, 1), Point(1, 1)}};
-  const std::vector<Polygon> pieces = decompose_by_extensions(cross_shape);
+  const std::vector<Polygon> pieces = decompose_by_extensions(cross_shape).or_throw();
   double area = 0;
   for (const Polygon& q : remove_flat(pieces)) {
     ASSERT_EQ(q.size(), 4u);
@@ -481,6 +481,24 @@ TEST(Convex, ExtensionDecompositionTilesWithConvexPieces) {
     area += q.area();
   }
   EXPECT_DOUBLE_EQ(area, 5.0);
+}
+
+// The failures are values the caller acts on (the diffeomorphism tries its next candidate):
+// a clockwise square has no ear (every corner is reflex for the counter-clockwise walk), the plus
+// sign needs 3 pieces (the bar and two arms).
+TEST(Convex, DecompositionFailuresAreValues) {
+  const Polygon clockwise{{Point(0, 0), Point(0, 1), Point(1, 1), Point(1, 0)}};
+  const Outcome<std::vector<Polygon>> t = triangulate(clockwise);
+  ASSERT_FALSE(t.ok());
+  EXPECT_NE(t.reason().find("no ear"), std::string::npos) << t.reason();
+  const Polygon cross_shape{{Point(1, 0), Point(2, 0), Point(2, 1), Point(3, 1), Point(3, 2),
+                             Point(2, 2), Point(2, 3), Point(1, 3), Point(1, 2), Point(0, 2),
+                             Point(0, 1), Point(1, 1)}};
+  const Outcome<std::vector<Polygon>> few = decompose_by_extensions(cross_shape, 2);
+  ASSERT_FALSE(few.ok());
+  EXPECT_NE(few.reason().find("more than 2 pieces"), std::string::npos) << few.reason();
+  EXPECT_THROW((void)decompose_by_extensions(cross_shape, 2).or_throw(), Error);
+  EXPECT_TRUE(decompose_by_extensions(cross_shape).ok());
 }
 
 }  // namespace

@@ -38,8 +38,14 @@ Polygon square(double x0, double y0, double side) {
   return poly({{x0, y0}, {x0 + side, y0}, {x0 + side, y0 + side}, {x0, y0 + side}});
 }
 
-// Expects validated() to throw a rearm::Error whose message has every listed fragment.
+// Expects validated() to throw a rearm::Error whose message has every listed fragment, and
+// checked_polygon() to report the same defect as a value.
 void expect_rejected(const Polygon& p, const std::vector<std::string>& fragments) {
+  const Outcome<Polygon> checked = checked_polygon(p, "probe");
+  ASSERT_FALSE(checked.ok());
+  for (const std::string& f : fragments) {
+    EXPECT_NE(checked.reason().find(f), std::string::npos) << checked.reason();
+  }
   try {
     validated(p, "probe");
     ADD_FAILURE() << "validated() accepted an invalid polygon";
