@@ -42,103 +42,147 @@ std::string quoted(const std::string& s) {
   return out + '"';
 }
 
-std::vector<HoaToken> lex_hoa(std::string_view s, const char* who) {
-  std::vector<HoaToken> toks;
-  std::size_t i = 0;
-  int line = 1;
-  const std::size_t n = s.size();
-  for (;;) {
-    // Whitespace and (nested) comments.
+namespace {
+
+// The HOA tokens of one text; errors name `who` and the line.
+class HoaLexer {
+ public:
+  HoaLexer(std::string_view s, const char* who) : s_(s), who_(who) {}
+
+  std::vector<HoaToken> lex() {
+    std::vector<HoaToken> toks;
     for (;;) {
-      if (i < n && (s[i] == ' ' || s[i] == '\t' || s[i] == '\r' || s[i] == '\n')) {
-        if (s[i] == '\n') ++line;
-        ++i;
-      } else if (i + 1 < n && s[i] == '/' && s[i + 1] == '*') {
-        const int start_line = line;
-        int depth = 0;
-        while (true) {
-          if (i + 1 >= n) fail(who, start_line, "unterminated comment");
-          if (s[i] == '/' && s[i + 1] == '*') {
-            ++depth;
-            i += 2;
-          } else if (s[i] == '*' && s[i + 1] == '/') {
-            i += 2;
-            if (--depth == 0) break;
-          } else {
-            if (s[i] == '\n') ++line;
-            ++i;
-          }
-        }
+      skip_blank();
+      HoaToken t;
+      t.line = line_;
+      if (i_ >= s_.size()) {
+        toks.push_back(t);
+        return toks;
+      }
+      lex_token(t);
+      toks.push_back(std::move(t));
+    }
+  }
+
+ private:
+  // Whitespace and (nested) comments.
+  void skip_blank() {
+    const std::size_t n = s_.size();
+    for (;;) {
+      if (i_ < n && (s_[i_] == ' ' || s_[i_] == '\t' || s_[i_] == '\r' || s_[i_] == '\n')) {
+        if (s_[i_] == '\n') ++line_;
+        ++i_;
+      } else if (i_ + 1 < n && s_[i_] == '/' && s_[i_ + 1] == '*') {
+        skip_comment();
       } else {
         break;
       }
     }
-    HoaToken t;
-    t.line = line;
-    if (i >= n) {
-      toks.push_back(t);
-      return toks;
+  }
+
+  void skip_comment() {
+    const std::size_t n = s_.size();
+    const int start_line = line_;
+    int depth = 0;
+    while (true) {
+      if (i_ + 1 >= n) fail(who_, start_line, "unterminated comment");
+      if (s_[i_] == '/' && s_[i_ + 1] == '*') {
+        ++depth;
+        i_ += 2;
+      } else if (s_[i_] == '*' && s_[i_ + 1] == '/') {
+        i_ += 2;
+        if (--depth == 0) break;
+      } else {
+        if (s_[i_] == '\n') ++line_;
+        ++i_;
+      }
     }
-    const char c = s[i];
+  }
+
+  // The token that starts at s_[i_] (not blank, not the end).
+  void lex_token(HoaToken& t) {
+    const std::size_t n = s_.size();
+    const char c = s_[i_];
     if (c == '"') {
-      t.kind = HoaTok::kString;
-      ++i;
-      for (;;) {
-        if (i >= n) fail(who, t.line, "unterminated string");
-        if (s[i] == '"') break;
-        if (s[i] == '\\') {
-          if (++i >= n) fail(who, t.line, "unterminated string");
-        }
-        if (s[i] == '\n') ++line;
-        t.text += s[i++];
-      }
-      ++i;
+      lex_string(t);
     } else if (is_digit(c)) {
-      t.kind = HoaTok::kInt;
-      std::uint64_t v = 0;
-      while (i < n && is_digit(s[i])) {
-        v = v * 10 + static_cast<std::uint64_t>(s[i] - '0');
-        if (v > kMaxHoaInt) fail(who, line, "integer too large (HOA integers are < 2^31)");
-        t.text += s[i++];
-      }
-      t.value = static_cast<std::uint32_t>(v);
+      lex_int(t);
     } else if (is_ident_start(c)) {
-      while (i < n && is_hoa_ident_char(s[i])) t.text += s[i++];
-      if (i < n && s[i] == ':') {
+      while (i_ < n && is_hoa_ident_char(s_[i_])) t.text += s_[i_++];
+      if (i_ < n && s_[i_] == ':') {
         t.kind = HoaTok::kHeader;
-        ++i;
+        ++i_;
       } else {
         t.kind = HoaTok::kIdent;
       }
     } else if (c == '@') {
       t.kind = HoaTok::kAlias;
-      ++i;
-      while (i < n && is_hoa_ident_char(s[i])) t.text += s[i++];
-      if (t.text.empty()) fail(who, line, "'@' must be followed by an alias name");
+      ++i_;
+      while (i_ < n && is_hoa_ident_char(s_[i_])) t.text += s_[i_++];
+      if (t.text.empty()) fail(who_, line_, "'@' must be followed by an alias name");
     } else if (c == '-') {
-      static const std::pair<const char*, HoaTok> kMarkers[] = {{"--BODY--", HoaTok::kBody},
-                                                                {"--END--", HoaTok::kEndMarker},
-                                                                {"--ABORT--", HoaTok::kAbort}};
-      bool found = false;
-      for (const auto& [text, kind] : kMarkers) {
-        if (s.substr(i).starts_with(text)) {
-          t.kind = kind;
-          t.text = text;
-          i += std::string_view(text).size();
-          found = true;
-          break;
-        }
-      }
-      if (!found) fail(who, line, "unexpected '-' (expected --BODY--, --END-- or --ABORT--)");
+      lex_marker(t);
     } else if (std::string_view("[]{}()!&|").find(c) != std::string_view::npos) {
       t.kind = HoaTok::kPunct;
       t.text = std::string(1, c);
-      ++i;
+      ++i_;
     } else {
-      fail(who, line, "unexpected character " + describe_char(c));
+      fail(who_, line_, "unexpected character " + describe_char(c));
     }
-    toks.push_back(std::move(t));
   }
+
+  void lex_string(HoaToken& t) {
+    const std::size_t n = s_.size();
+    t.kind = HoaTok::kString;
+    ++i_;
+    for (;;) {
+      if (i_ >= n) fail(who_, t.line, "unterminated string");
+      if (s_[i_] == '"') break;
+      if (s_[i_] == '\\') {
+        if (++i_ >= n) fail(who_, t.line, "unterminated string");
+      }
+      if (s_[i_] == '\n') ++line_;
+      t.text += s_[i_++];
+    }
+    ++i_;
+  }
+
+  void lex_int(HoaToken& t) {
+    t.kind = HoaTok::kInt;
+    std::uint64_t v = 0;
+    while (i_ < s_.size() && is_digit(s_[i_])) {
+      v = v * 10 + static_cast<std::uint64_t>(s_[i_] - '0');
+      if (v > kMaxHoaInt) fail(who_, line_, "integer too large (HOA integers are < 2^31)");
+      t.text += s_[i_++];
+    }
+    t.value = static_cast<std::uint32_t>(v);
+  }
+
+  void lex_marker(HoaToken& t) {
+    static const std::pair<const char*, HoaTok> kMarkers[] = {{"--BODY--", HoaTok::kBody},
+                                                              {"--END--", HoaTok::kEndMarker},
+                                                              {"--ABORT--", HoaTok::kAbort}};
+    for (const auto& [text, kind] : kMarkers) {
+      if (s_.substr(i_).starts_with(text)) {
+        t.kind = kind;
+        t.text = text;
+        i_ += std::string_view(text).size();
+        return;
+      }
+    }
+    fail(who_, line_, "unexpected '-' (expected --BODY--, --END-- or --ABORT--)");
+  }
+
+  std::string_view s_;
+  const char* who_;
+  std::size_t i_ = 0;
+  int line_ = 1;
+};
+
+}  // namespace
+
+std::vector<HoaToken> lex_hoa(std::string_view s, const char* who) {
+  return HoaLexer(s, who).lex();
 }
 
 std::string describe(const HoaToken& t) {

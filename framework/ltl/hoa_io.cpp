@@ -167,17 +167,7 @@ class HoaReader {
       fail(kHoaReader, version.line,
            "unsupported HOA version " + describe(version) + " (only v1 is read)");
     }
-    std::vector<Item> items;
-    while (peek().kind == HoaTok::kHeader) {
-      Item item{next().text, pos_, pos_, toks_[pos_ - 1].line};
-      while (peek().kind != HoaTok::kHeader && peek().kind != HoaTok::kBody &&
-             peek().kind != HoaTok::kEnd && peek().kind != HoaTok::kEndMarker &&
-             peek().kind != HoaTok::kAbort) {
-        ++pos_;
-      }
-      item.end = pos_;
-      items.push_back(std::move(item));
-    }
+    const std::vector<Item> items = collect_items();
     check_not_aborted();
     if (peek().kind != HoaTok::kBody) {
       fail(kHoaReader, peek().line,
@@ -200,33 +190,55 @@ class HoaReader {
     }
     for (const Item& item : items) {
       if (item.name == "Alias") read_alias(item);
-      if (item.name == "States") {
-        pos_ = item.begin;
-        num_states_ = read_int(item, "the number of states");
-        if (num_states_ > kMaxHoaStates) {
-          fail(kHoaReader, item.line,
-               "too many states (at most " + std::to_string(kMaxHoaStates) + ")");
-        }
-        has_num_states_ = true;
-        expect_item_end(item);
-      }
+      if (item.name == "States") read_num_states(item);
       if (item.name == "Acceptance") read_acceptance(item);
     }
     if (seen["Acceptance"] == 0) fail(kHoaReader, body_line, "missing 'Acceptance:' header");
     for (const Item& item : items) {
-      if (item.name != "Start") continue;
-      pos_ = item.begin;
-      const std::uint32_t q = read_state_index(item.line, "Start:");
-      if (pos_ < item.end && is_punct(peek(), '&')) {
-        fail(kHoaReader, peek().line,
-             "a conjunction of initial states (alternating automaton) is not supported");
-      }
-      expect_item_end(item);
-      if (std::find(start_.begin(), start_.end(), q) == start_.end()) start_.push_back(q);
+      if (item.name == "Start") read_start(item);
     }
     // acc-name, tool, name, properties and unknown headers carry no semantics we need (the
     // Acceptance: line defines acceptance, HOA v1 "Acceptance Specifications").
     pos_ = body_pos;
+  }
+
+  // The header items up to the first token that ends the header (--BODY--, say), each with
+  // its value tokens; pos_ is left at that token.
+  std::vector<Item> collect_items() {
+    std::vector<Item> items;
+    while (peek().kind == HoaTok::kHeader) {
+      Item item{next().text, pos_, pos_, toks_[pos_ - 1].line};
+      while (peek().kind != HoaTok::kHeader && peek().kind != HoaTok::kBody &&
+             peek().kind != HoaTok::kEnd && peek().kind != HoaTok::kEndMarker &&
+             peek().kind != HoaTok::kAbort) {
+        ++pos_;
+      }
+      item.end = pos_;
+      items.push_back(std::move(item));
+    }
+    return items;
+  }
+
+  void read_num_states(const Item& item) {
+    pos_ = item.begin;
+    num_states_ = read_int(item, "the number of states");
+    if (num_states_ > kMaxHoaStates) {
+      fail(kHoaReader, item.line,
+           "too many states (at most " + std::to_string(kMaxHoaStates) + ")");
+    }
+    has_num_states_ = true;
+    expect_item_end(item);
+  }
+
+  void read_start(const Item& item) {
+    pos_ = item.begin;
+    const std::uint32_t q = read_state_index(item.line, "Start:");
+    if (pos_ < item.end && is_punct(peek(), '&')) {
+      fail(kHoaReader, peek().line,
+           "a conjunction of initial states (alternating automaton) is not supported");
+    }
+    expect_item_end(item);
+    if (std::find(start_.begin(), start_.end(), q) == start_.end()) start_.push_back(q);
   }
 
   void check_not_aborted() const {
@@ -453,7 +465,6 @@ class HoaReader {
 
   void read_body() {
     RawState* current = nullptr;
-    std::uint32_t current_index = 0;
     for (;;) {
       const HoaToken& t = peek();
       check_not_aborted();
@@ -464,28 +475,7 @@ class HoaReader {
       if (t.kind == HoaTok::kEnd) fail(kHoaReader, t.line, "missing --END--");
       if (t.kind == HoaTok::kHeader && t.text == "State") {
         ++pos_;
-        const int line = t.line;
-        bool has_label = false;
-        Ref label = BddManager::kTrue;
-        if (is_punct(peek(), '[')) {
-          ++pos_;
-          label = parse_label();
-          expect_close_bracket();
-          has_label = true;
-        }
-        current_index = read_state_index(line, "State:");
-        current = &raw(current_index);
-        if (current->declared) {
-          fail(kHoaReader, line, "state " + std::to_string(current_index) + " declared twice");
-        }
-        current->declared = true;
-        current->has_label = has_label;
-        current->label = label;
-        if (peek().kind == HoaTok::kString) {
-          current->name = next().text;
-          has_names_ = true;
-        }
-        if (is_punct(peek(), '{')) current->mark = read_acc_sig();
+        current = read_state(t.line);
         continue;
       }
       if (current == nullptr) {
@@ -520,6 +510,32 @@ class HoaReader {
       fail(kHoaReader, peek().line,
            "unexpected " + describe(peek()) + " after --END-- (one automaton per text)");
     }
+  }
+
+  // A state declaration after its 'State:' (at `line`): label? INT STRING? acc-sig?
+  RawState* read_state(int line) {
+    bool has_label = false;
+    Ref label = BddManager::kTrue;
+    if (is_punct(peek(), '[')) {
+      ++pos_;
+      label = parse_label();
+      expect_close_bracket();
+      has_label = true;
+    }
+    const std::uint32_t index = read_state_index(line, "State:");
+    RawState* current = &raw(index);
+    if (current->declared) {
+      fail(kHoaReader, line, "state " + std::to_string(index) + " declared twice");
+    }
+    current->declared = true;
+    current->has_label = has_label;
+    current->label = label;
+    if (peek().kind == HoaTok::kString) {
+      current->name = next().text;
+      has_names_ = true;
+    }
+    if (is_punct(peek(), '{')) current->mark = read_acc_sig();
+    return current;
   }
 
   void expect_close_bracket() {

@@ -107,6 +107,26 @@ std::vector<std::string> spin_names(const std::vector<std::string>& aps) {
   return out;
 }
 
+// The edges of all initial states, one per destination (their guards or-ed): the edges of
+// the fresh initial state that write_never_claim adds when there are several.
+template <class Alphabet>
+std::vector<typename Automaton<Alphabet>::Edge> initial_edges(const Automaton<Alphabet>& a) {
+  using Edge = typename Automaton<Alphabet>::Edge;
+  std::vector<Edge> edges;
+  for (const std::uint32_t q : a.initial) {
+    for (const Edge& e : a.out[q]) {
+      auto it =
+          std::find_if(edges.begin(), edges.end(), [&](const Edge& f) { return f.dst == e.dst; });
+      if (it == edges.end()) {
+        edges.push_back(e);
+      } else {
+        it->guard = a.alphabet.disj(it->guard, e.guard);
+      }
+    }
+  }
+  return edges;
+}
+
 template <class Alphabet>
 std::string write_never_claim(const Automaton<Alphabet>& a) {
   using Edge = typename Automaton<Alphabet>::Edge;
@@ -155,19 +175,7 @@ std::string write_never_claim(const Automaton<Alphabet>& a) {
     out += "\tfi;\n";
   };
   if (fresh_init) {
-    std::vector<Edge> edges;
-    for (const std::uint32_t q : a.initial) {
-      for (const Edge& e : a.out[q]) {
-        auto it =
-            std::find_if(edges.begin(), edges.end(), [&](const Edge& f) { return f.dst == e.dst; });
-        if (it == edges.end()) {
-          edges.push_back(e);
-        } else {
-          it->guard = a.alphabet.disj(it->guard, e.guard);
-        }
-      }
-    }
-    write_state("T0_init", "initial states", edges);
+    write_state("T0_init", "initial states", initial_edges(a));
   } else {
     write_state(label(init), state_name(a, init), a.out[init]);
   }
@@ -522,7 +530,7 @@ class NeverReader {
     return r;
   }
 
-  void build() {
+  void index_labels() {
     for (std::size_t r = 0; r < states_.size(); ++r) {
       for (const std::string& l : states_[r].labels) {
         if (!by_label_.emplace(l, r).second) {
@@ -530,6 +538,20 @@ class NeverReader {
         }
       }
     }
+  }
+
+  // The raw state of the first label that ends in "init"; the first state when none does.
+  std::size_t initial_raw() const {
+    for (std::size_t r = 0; r < states_.size(); ++r) {
+      for (const std::string& l : states_[r].labels) {
+        if (l.ends_with("init")) return r;
+      }
+    }
+    return 0;
+  }
+
+  void build() {
+    index_labels();
     GeneralNba& a = result_;
     // Automaton states: the non-goto raw states in textual order.
     std::vector<std::uint32_t> index(states_.size(), 0);
@@ -583,18 +605,7 @@ class NeverReader {
           break;
       }
     }
-    std::size_t init = 0;
-    bool found = false;
-    for (std::size_t r = 0; r < states_.size() && !found; ++r) {
-      for (const std::string& l : states_[r].labels) {
-        if (l.ends_with("init")) {
-          init = r;
-          found = true;
-          break;
-        }
-      }
-    }
-    a.initial.push_back(index[resolve_raw(init)]);
+    a.initial.push_back(index[resolve_raw(initial_raw())]);
   }
 
   std::vector<NcToken> toks_;
