@@ -2,11 +2,11 @@
 
 #include <chrono>
 #include <cmath>
+#include <nlohmann/json.hpp>
 
 #include "baselines/validator.h"
 #include "core/error.h"
 #include "core/rng.h"
-#include "experiment/json_writer.h"
 #include "experiment/known_obstacles.h"
 #include "experiment/run_scenario.h"
 #include "experiment/task_from_scenario.h"
@@ -257,10 +257,22 @@ void run_replanning(const scenario::Scenario& s, const RearrangementProblem& ful
   if (r.status.empty()) set_status_from_execution(r, full);
 }
 
-void polygon(experiment::JsonWriter& j, const geometry::Polygon& p) {
-  j.begin_array();
-  for (const auto& v : p.vertices) j.begin_array().value(v.x()).value(v.y()).end_array();
-  j.end_array();
+// Objects keep their keys in insertion order, the order of rearm run's files
+// (experiment/run_scenario.h); non-finite numbers are written as null.
+using Json = nlohmann::ordered_json;
+constexpr int kIndent = 2;  // metrics.json is for people: two spaces per level
+
+// The document's text ending in a newline; invalid UTF-8 in a name becomes U+FFFD.
+std::string text(const Json& j, int indent = -1) {
+  return j.dump(indent, ' ', false, Json::error_handler_t::replace) + "\n";
+}
+
+Json point(const geometry::Point& p) { return {p.x(), p.y()}; }
+
+Json polygon(const geometry::Polygon& p) {
+  Json a = Json::array();
+  for (const auto& v : p.vertices) a.push_back(point(v));
+  return a;
 }
 
 }  // namespace
@@ -304,145 +316,139 @@ BaselineRecord run_baseline(const scenario::Scenario& s, const BaselineOptions& 
   return r;
 }
 
+namespace {
+
+// "actions" and "objects" of metrics.json, in the layout of rearm run's.
+Json actions_json(const ExecutionLog& e) {
+  Json a = Json::array();
+  for (const auto& r : e.actions) {
+    a.push_back({{"action", r.action},
+                 {"fix_mode", false},
+                 {"outcome", r.outcome},
+                 {"reason", ""},
+                 {"t_start_s", r.t_start},
+                 {"t_end_s", r.t_end}});
+  }
+  return a;
+}
+
+Json objects_json(const scenario::Scenario& s, const ExecutionLog& e) {
+  Json a = Json::array();
+  for (std::size_t i = 0; i < s.objects.size(); ++i) {
+    const geometry::Point start = s.objects[i].disk.center;
+    const geometry::Point end = i < e.objects_end.size() ? e.objects_end[i] : start;
+    a.push_back({{"name", s.objects[i].name}, {"start", point(start)}, {"end", point(end)}});
+  }
+  return a;
+}
+
+// The keys every metrics.json has (those of rearm run's, experiment::metrics_json).
+Json common_metrics(const scenario::Scenario& s, const BaselineRecord& r) {
+  const ExecutionLog& e = r.execution;
+  Json by_kind = Json::object(), recoveries = Json::object();
+  for (const experiment::ClearanceKind& k : experiment::kClearanceKinds)
+    by_kind[k.name] = e.clearance_by_kind.*k.value;
+  for (const std::string& k : experiment::recovery_names()) recoveries[k] = 0;  // rearm's only
+  return {{"scenario", s.name},
+          {"source", s.source},
+          {"plant", "box2d"},
+          {"seed", r.seed},
+          {"task", s.task},
+          {"status", r.status},
+          {"reason", r.reason},
+          {"collisions", e.collisions},
+          {"collision_events", e.collision_events},
+          {"min_clearance", e.min_clearance},
+          {"min_clearance_by_kind", by_kind},
+          {"sim_time_s", e.sim_time},
+          {"steps", e.steps},
+          {"dt_s", s.simulation.dt},
+          {"wall_time_s", r.wall_time_s},
+          // rearm's controller_time_s is its computation; the baselines' is their planning.
+          {"controller_time_s", r.planning_time_s},
+          {"real_time_factor", e.wall_time > 0 ? e.sim_time / e.wall_time : 0.0},
+          {"fix_mode_entries", 0},
+          {"recoveries", recoveries},
+          {"robot_path_length_m", e.robot_path_length},
+          {"object_path_length_m", e.object_path_length},
+          {"rebuilds", 0},
+          {"topology_checks", 0},
+          {"actions", actions_json(e)},
+          {"objects", objects_json(s, e)}};
+}
+
+}  // namespace
+
 std::string baseline_metrics_json(const scenario::Scenario& s, const BaselineRecord& r) {
   const ExecutionLog& e = r.execution;
-  experiment::JsonWriter j(true);
-  j.begin_object();
-  j.key("scenario").value(s.name);
-  j.key("source").value(s.source);
-  j.key("plant").value("box2d");
-  j.key("seed").value(r.seed);
-  j.key("task").value(s.task);
-  j.key("status").value(r.status);
-  j.key("reason").value(r.reason);
-  j.key("collisions").value(e.collisions);
-  j.key("collision_events").begin_array();
-  for (const std::string& c : e.collision_events) j.value(c);
-  j.end_array();
-  j.key("min_clearance").value(e.min_clearance);
-  experiment::clearance_by_kind_json(j, e.clearance_by_kind);
-  j.key("sim_time_s").value(e.sim_time);
-  j.key("steps").value(static_cast<std::int64_t>(e.steps));
-  j.key("dt_s").value(s.simulation.dt);
-  j.key("wall_time_s").value(r.wall_time_s);
-  // rearm's controller_time_s is its computation; the baselines' is their planning.
-  j.key("controller_time_s").value(r.planning_time_s);
-  j.key("real_time_factor").value(e.wall_time > 0 ? e.sim_time / e.wall_time : 0.0);
-  j.key("fix_mode_entries").value(0);
-  j.key("recoveries").begin_object();  // rearm's robust variant only
-  for (const std::string& k : experiment::recovery_names()) j.key(k).value(0);
-  j.end_object();
-  j.key("robot_path_length_m").value(e.robot_path_length);
-  j.key("object_path_length_m").value(e.object_path_length);
-  j.key("rebuilds").value(0);
-  j.key("topology_checks").value(0);
-  j.key("actions").begin_array();
-  for (const auto& a : e.actions) {
-    j.begin_object();
-    j.key("action").value(a.action);
-    j.key("fix_mode").value(false);
-    j.key("outcome").value(a.outcome);
-    j.key("reason").value("");
-    j.key("t_start_s").value(a.t_start);
-    j.key("t_end_s").value(a.t_end);
-    j.end_object();
-  }
-  j.end_array();
-  j.key("objects").begin_array();
-  for (std::size_t i = 0; i < s.objects.size(); ++i) {
-    j.begin_object();
-    j.key("name").value(s.objects[i].name);
-    const auto& st = s.objects[i].disk.center;
-    j.key("start").begin_array().value(st.x()).value(st.y()).end_array();
-    const geometry::Point end = i < e.objects_end.size() ? e.objects_end[i] : st;
-    j.key("end").begin_array().value(end.x()).value(end.y()).end_array();
-    j.end_object();
-  }
-  j.end_array();
-  j.key("method").value(to_string(r.method));
-  j.key("time_limit_s").value(r.time_limit);
-  j.key("plan_status").value(to_string(r.plan_status));
-  j.key("planning_time_s").value(r.planning_time_s);
-  j.key("subqueries").value(static_cast<std::int64_t>(r.subqueries));
-  j.key("nodes").value(static_cast<std::int64_t>(r.nodes));
-  j.key("arrangement_nodes").value(static_cast<std::int64_t>(r.arrangement_nodes));
-  j.key("replans").value(r.replans);
-  j.key("plan_moves").value(static_cast<std::int64_t>(r.plan.moves.size()));
-  j.key("moves_executed").value(static_cast<std::int64_t>(e.moves_done));
-  j.key("executed").value(r.executed);
-  j.key("goals_reached").value(r.executed && e.goals_reached);
-  j.key("violations").begin_array();
-  for (const auto& v : r.violations) j.value(v);
-  j.end_array();
-  j.end_object();
-  return j.str();
+  Json j = common_metrics(s, r);
+  j["method"] = to_string(r.method);
+  j["time_limit_s"] = r.time_limit;
+  j["plan_status"] = to_string(r.plan_status);
+  j["planning_time_s"] = r.planning_time_s;
+  j["subqueries"] = r.subqueries;
+  j["nodes"] = r.nodes;
+  j["arrangement_nodes"] = r.arrangement_nodes;
+  j["replans"] = r.replans;
+  j["plan_moves"] = r.plan.moves.size();
+  j["moves_executed"] = e.moves_done;
+  j["executed"] = r.executed;
+  j["goals_reached"] = r.executed && e.goals_reached;
+  j["violations"] = r.violations;
+  return text(j, kIndent);
 }
+
+namespace {
+
+// {name, polygon} of each unknown obstacle or region.
+template <typename Named>
+Json named_polygons(const std::vector<Named>& items) {
+  Json a = Json::array();
+  for (const Named& x : items) a.push_back({{"name", x.name}, {"polygon", polygon(x.polygon)}});
+  return a;
+}
+
+}  // namespace
 
 std::string baseline_trajectory_json(const scenario::Scenario& s, const BaselineRecord& r,
                                      int stride) {
   if (stride < 1) throw Error("trajectory: stride must be >= 1");
   const ExecutionLog& e = r.execution;
-  experiment::JsonWriter j;
-  j.begin_object();
-  j.key("scenario").value(s.name);
-  j.key("task").value(s.task);
-  j.key("status").value(r.status);
-  j.key("robot_radius").value(s.robot.radius);
-  j.key("sensor_range").value(s.robot.sensor_range);
-  j.key("workspace");
-  polygon(j, s.workspace);
-  j.key("familiar").begin_array();
-  for (const auto& f : s.familiar) {
-    j.begin_object().key("name").value(f.name).key("polygon");
-    polygon(j, f.polygon);
-    j.key("localized_at").value(0.0).end_object();
-  }
-  j.end_array();
-  j.key("unknown").begin_array();
-  for (const auto& u : s.unknown) {
-    j.begin_object().key("name").value(u.name).key("polygon");
-    polygon(j, u.polygon);
-    j.end_object();
-  }
-  j.end_array();
-  j.key("regions").begin_array();
-  for (const auto& g : s.regions) {
-    j.begin_object().key("name").value(g.name).key("polygon");
-    polygon(j, g.polygon);
-    j.end_object();
-  }
-  j.end_array();
-  j.key("objects").begin_array();
-  for (const auto& o : s.objects)
-    j.begin_object().key("name").value(o.name).key("radius").value(o.disk.radius).end_object();
-  j.end_array();
-  j.key("dt").value(s.simulation.dt * stride);
   const auto st = static_cast<std::size_t>(stride);
-  j.key("robot").begin_array();
+  Json familiar = Json::array(), objects = Json::array(), robot = Json::array();
+  for (const auto& f : s.familiar)  // known from the start: localized at 0
+    familiar.push_back({{"name", f.name}, {"polygon", polygon(f.polygon)}, {"localized_at", 0.0}});
+  for (const auto& o : s.objects) objects.push_back({{"name", o.name}, {"radius", o.disk.radius}});
   for (std::size_t k = 0; k < e.robot.size(); k += st)
-    j.begin_array()
-        .value(e.robot[k].x.x())
-        .value(e.robot[k].x.y())
-        .value(e.robot[k].psi)
-        .end_array();
-  j.end_array();
-  j.key("object_paths").begin_array();
+    robot.push_back({e.robot[k].x.x(), e.robot[k].x.y(), e.robot[k].psi});
+  Json object_paths = Json::array();
   for (std::size_t i = 0; i < s.objects.size(); ++i) {
-    j.begin_array();
-    for (std::size_t k = 0; k < e.objects.size(); k += st)
-      j.begin_array().value(e.objects[k][i].x()).value(e.objects[k][i].y()).end_array();
-    j.end_array();
+    Json& p = object_paths.emplace_back(Json::array());
+    for (std::size_t k = 0; k < e.objects.size(); k += st) p.push_back(point(e.objects[k][i]));
   }
-  j.end_array();
-  j.key("actions").begin_array();
+  Json actions = Json::array();
   for (const auto& a : e.actions) {
-    j.begin_object().key("action").value(a.action).key("fix_mode").value(false);
-    j.key("outcome").value(a.outcome);
-    j.key("t_start").value(a.t_start).key("t_end").value(a.t_end).end_object();
+    actions.push_back({{"action", a.action},
+                       {"fix_mode", false},
+                       {"outcome", a.outcome},
+                       {"t_start", a.t_start},
+                       {"t_end", a.t_end}});
   }
-  j.end_array();
-  j.end_object();
-  return j.str();
+  const Json j = {{"scenario", s.name},
+                  {"task", s.task},
+                  {"status", r.status},
+                  {"robot_radius", s.robot.radius},
+                  {"sensor_range", s.robot.sensor_range},
+                  {"workspace", polygon(s.workspace)},
+                  {"familiar", familiar},
+                  {"unknown", named_polygons(s.unknown)},
+                  {"regions", named_polygons(s.regions)},
+                  {"objects", objects},
+                  {"dt", s.simulation.dt * stride},
+                  {"robot", robot},
+                  {"object_paths", object_paths},
+                  {"actions", actions}};
+  return text(j);
 }
 
 }  // namespace rearm::baselines

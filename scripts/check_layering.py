@@ -9,7 +9,8 @@ directly or through their own links; `experiment` may include every framework mo
 headers stay where the same section puts them: CGAL in geometry and topology .cpp files (and
 geometry/cgal_internal.h, which only .cpp files include), Box2D in sim .cpp files, yaml-cpp in
 scenario (.cpp files and scenario/yaml_internal.h), oneTBB in experiment .cpp files, OMPL in
-baselines .cpp files; no *_internal.h is included from a header. Prints each offending
+baselines .cpp files, nlohmann-json in experiment and baselines .cpp files; no *_internal.h is
+included from a header. Prints each offending
 file:line and exits 1 when there is one.
 """
 import pathlib
@@ -27,6 +28,7 @@ THIRD_PARTY = {
     "tbb/": (("framework/experiment",), ()),
     "oneapi/tbb": (("framework/experiment",), ()),
     "ompl/": (("baselines",), ()),
+    "nlohmann/": (("framework/experiment", "baselines"), ()),
 }
 
 

@@ -12,6 +12,8 @@ PACKAGES=(
   libtbb-dev libbenchmark-dev libgtest-dev libgmock-dev libyaml-cpp-dev libmimalloc-dev
   # the command line
   libcli11-dev
+  # the result files' JSON (metrics.json, trajectory.json, diffeo.json; header-only)
+  nlohmann-json3-dev
   # independent LTL translator used by the tests; plotting
   spin python3-matplotlib python3-pil
   # the fuzz targets (tests/fuzz): clang with its sanitizer and libFuzzer runtimes; the code

@@ -4,12 +4,14 @@
 // known (docs/reactive.md §2–3), integrates the closed loop (reactive::run_closed_loop) from the
 // robot's start, writes everything needed to draw them to DIR/diffeo.json, and plots it with
 // experiments/plot/diffeo.py.
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <limits>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <numbers>
 #include <optional>
 #include <string>
@@ -19,7 +21,6 @@
 #include "core/error.h"
 #include "core/file_io.h"
 #include "core/rng.h"
-#include "experiment/json_writer.h"
 #include "experiment/task_from_scenario.h"
 #include "geometry/distance.h"
 #include "options.h"
@@ -34,7 +35,7 @@ namespace rearm::cli {
 namespace {
 
 namespace fs = std::filesystem;
-using experiment::JsonWriter;
+using Json = nlohmann::ordered_json;  // keys in the order written
 using geometry::Disk;
 using geometry::Point;
 using geometry::Polygon;
@@ -70,7 +71,8 @@ constexpr int kSamplesPerCell = 8;
 constexpr double kBoundarySpacing = 0.02;  // m
 // m: the spacing of the points tried for a goal inside a region whose centroid is not free.
 constexpr double kGoalGrid = 0.05;
-// Significant digits of diffeo.json's numbers: drawing data, where 9 are plenty.
+// Significant digits of diffeo.json's numbers: drawing data, where 9 are plenty and keep the
+// file small (round_numbers).
 constexpr int kJsonDigits = 9;
 
 // The command line, parsed.
@@ -219,30 +221,48 @@ Point random_start(Rng& rng, const reactive::MappedSpace& m) {
 }
 
 // ---- diffeo.json (experiments/plot/diffeo.py reads it) ----
-void put(JsonWriter& j, const Point& p) { j.begin_array().value(p.x()).value(p.y()).end_array(); }
+Json put(const Point& p) { return {p.x(), p.y()}; }
 
-void put(JsonWriter& j, const std::vector<Point>& ps) {
-  j.begin_array();
-  for (const Point& p : ps) put(j, p);
-  j.end_array();
+Json put(const std::vector<Point>& ps) {
+  Json a = Json::array();
+  for (const Point& p : ps) a.push_back(put(p));
+  return a;
 }
 
-void put(JsonWriter& j, const Polygon& p) { put(j, p.vertices); }
+Json put(const Polygon& p) { return put(p.vertices); }
 
-void put(JsonWriter& j, const std::vector<Polygon>& ps) {
-  j.begin_array();
-  for (const Polygon& p : ps) put(j, p);
-  j.end_array();
+Json put(const std::vector<Polygon>& ps) {
+  Json a = Json::array();
+  for (const Polygon& p : ps) a.push_back(put(p));
+  return a;
 }
 
-void put(JsonWriter& j, const std::vector<Disk>& ds) {
-  j.begin_array();
-  for (const Disk& d : ds) {
-    j.begin_object().key("center");
-    put(j, d.center);
-    j.key("radius").value(d.radius).end_object();
+Json put(const std::vector<Disk>& ds) {
+  Json a = Json::array();
+  for (const Disk& d : ds) a.push_back({{"center", put(d.center)}, {"radius", d.radius}});
+  return a;
+}
+
+// v rounded to `digits` significant digits (correctly rounded, like printf's "%.*g"): nlohmann
+// then writes the shortest text that reads back as that double, at most `digits` digits.
+// Non-finite numbers pass through (written as null).
+double round_significant(double v, int digits) {
+  if (!std::isfinite(v)) return v;
+  char buf[32];
+  const auto [end, ec] =
+      std::to_chars(buf, buf + sizeof buf, v, std::chars_format::general, digits);
+  double r = v;
+  if (ec == std::errc()) std::from_chars(buf, end, r);
+  return r;
+}
+
+// Every floating-point number of j rounded to `digits` significant digits, in place.
+void round_numbers(Json& j, int digits) {
+  if (j.is_number_float()) {
+    j = round_significant(j.get<double>(), digits);
+  } else if (j.is_structured()) {
+    for (Json& child : j) round_numbers(child, digits);
   }
-  j.end_array();
 }
 
 // Lines of the freespace (horizontal and vertical, through F_e's bounding box) cut into the
@@ -280,93 +300,71 @@ std::vector<std::vector<Point>> grid_runs(const reactive::MappedSpace& m) {
 }
 
 // Mapped points and their images under h, as {"mapped": [...], "model": [...]}.
-void put_images(JsonWriter& j, const std::vector<Point>& xs, const reactive::Diffeomorphism& h) {
+Json images(const std::vector<Point>& xs, const reactive::Diffeomorphism& h) {
   std::vector<Point> ys;
   ys.reserve(xs.size());
   for (const Point& x : xs) ys.push_back(h.map(x));
-  j.key("mapped");
-  put(j, xs);
-  j.key("model");
-  put(j, ys);
+  return {{"mapped", put(xs)}, {"model", put(ys)}};
 }
 
-void put_grid(JsonWriter& j, const reactive::MappedSpace& m, const reactive::Diffeomorphism& h) {
-  j.key("grid").begin_array();
-  for (const auto& run : grid_runs(m)) {
-    j.begin_object();
-    put_images(j, run, h);
-    j.end_object();
-  }
-  j.end_array();
+Json put_grid(const reactive::MappedSpace& m, const reactive::Diffeomorphism& h) {
+  Json a = Json::array();
+  for (const auto& run : grid_runs(m)) a.push_back(images(run, h));
+  return a;
 }
 
 // Each familiar component's boundary, densely sampled, and its image (on ∂F_e or a model
 // disk's circle when h is right).
-void put_boundary_images(JsonWriter& j, const reactive::MappedSpace& m,
-                         const reactive::Diffeomorphism& h) {
-  j.key("boundary_images").begin_array();
+Json put_boundary_images(const reactive::MappedSpace& m, const reactive::Diffeomorphism& h) {
+  Json a = Json::array();
   for (std::size_t c = 0; c < m.familiar.size(); ++c) {
     const Polygon& p = m.familiar[c].polygon;
     std::vector<Point> xs;
     for (std::size_t i = 0; i < p.size(); ++i) {
-      const Point a = p.vertices[i], b = p.vertices[(i + 1) % p.size()];
-      const int n = std::max(1, static_cast<int>(std::ceil((b - a).norm() / kBoundarySpacing)));
-      for (int k = 0; k < n; ++k) xs.push_back(a + (b - a) * (static_cast<double>(k) / n));
+      const Point u = p.vertices[i], v = p.vertices[(i + 1) % p.size()];
+      const int n = std::max(1, static_cast<int>(std::ceil((v - u).norm() / kBoundarySpacing)));
+      for (int k = 0; k < n; ++k) xs.push_back(u + (v - u) * (static_cast<double>(k) / n));
     }
-    j.begin_object().key("component").value(static_cast<std::int64_t>(c));
-    put_images(j, xs, h);
-    j.end_object();
+    Json entry = {{"component", c}};
+    entry.update(images(xs, h));
+    a.push_back(std::move(entry));
   }
-  j.end_array();
+  return a;
 }
 
-void put_header(JsonWriter& j, const DiffeoArgs& a, const Scene& s,
-                const reactive::DiffeoParams& p) {
-  j.key("scene").value(a.scenario).key("seed").value(a.seed);
-  j.key("robot").begin_object();
-  j.key("model").value(a.robot == reactive::RobotModel::kUnicycle ? "unicycle" : "holonomic");
-  j.key("radius").value(s.radius).key("sensor_range").value(s.sensor_range).key("start");
-  put(j, s.start);
-  j.key("heading").value(s.heading).key("goal");
-  put(j, s.goal);
-  j.end_object();
-  j.key("params").begin_object().key("p").value(p.p).key("epsilon").value(p.epsilon);
-  j.key("mu1").value(p.mu1).key("mu2").value(p.mu2).end_object();
-  j.key("semantic").begin_object().key("workspace");
-  put(j, s.semantic.workspace);
-  j.key("familiar");
-  put(j, s.semantic.familiar);
-  j.key("unknown");
-  put(j, s.semantic.unknown);
-  j.key("movable");
-  put(j, s.semantic.movable);
-  j.end_object();
+// "scene", "seed", "robot", "params" and "semantic", the first keys of the document.
+Json put_header(const DiffeoArgs& a, const Scene& s, const reactive::DiffeoParams& p) {
+  const char* model = a.robot == reactive::RobotModel::kUnicycle ? "unicycle" : "holonomic";
+  return {{"scene", a.scenario},
+          {"seed", a.seed},
+          {"robot",
+           {{"model", model},
+            {"radius", s.radius},
+            {"sensor_range", s.sensor_range},
+            {"start", put(s.start)},
+            {"heading", s.heading},
+            {"goal", put(s.goal)}}},
+          {"params", {{"p", p.p}, {"epsilon", p.epsilon}, {"mu1", p.mu1}, {"mu2", p.mu2}}},
+          {"semantic",
+           {{"workspace", put(s.semantic.workspace)},
+            {"familiar", put(s.semantic.familiar)},
+            {"unknown", put(s.semantic.unknown)},
+            {"movable", put(s.semantic.movable)}}}};
 }
 
-void put_mapped(JsonWriter& j, const reactive::MappedSpace& m) {
-  j.key("mapped").begin_object().key("radius").value(m.radius).key("enclosing");
-  put(j, m.enclosing);
-  j.key("freespace").begin_object().key("outer");
-  put(j, m.freespace.outer);
-  j.key("holes");
-  put(j, m.freespace.holes);
-  j.end_object().key("familiar").begin_array();
+Json put_mapped(const reactive::MappedSpace& m) {
+  Json familiar = Json::array();
   for (const reactive::FamiliarComponent& c : m.familiar) {
-    j.begin_object().key("polygon");
-    put(j, c.polygon);
-    j.key("lid");
-    if (c.lid) {
-      put(j, std::vector<Point>{c.lid->first, c.lid->second});
-    } else {
-      j.null();
-    }
-    j.end_object();
+    familiar.push_back(
+        {{"polygon", put(c.polygon)},
+         {"lid", c.lid ? put(std::vector<Point>{c.lid->first, c.lid->second}) : Json()}});
   }
-  j.end_array().key("unknown");
-  put(j, m.unknown);
-  j.key("movable");
-  put(j, m.movable);
-  j.end_object();
+  return {{"radius", m.radius},
+          {"enclosing", put(m.enclosing)},
+          {"freespace", {{"outer", put(m.freespace.outer)}, {"holes", put(m.freespace.holes)}}},
+          {"familiar", familiar},
+          {"unknown", put(m.unknown)},
+          {"movable", put(m.movable)}};
 }
 
 const char* kind_name(reactive::Purge::Kind k) {
@@ -381,63 +379,66 @@ const char* kind_name(reactive::Purge::Kind k) {
   return "?";
 }
 
-void put_purges(JsonWriter& j, const reactive::Diffeomorphism& h) {
-  j.key("purges").begin_array();
+Json put_purges(const reactive::Diffeomorphism& h) {
+  Json a = Json::array();
   for (std::size_t i = 0; i < h.purges().size(); ++i) {
     const reactive::Purge& p = h.purges()[i];
-    j.begin_object().key("index").value(static_cast<std::int64_t>(i));
-    j.key("kind").value(kind_name(p.kind));
-    j.key("component").value(static_cast<std::int64_t>(p.component));
-    j.key("parent").value(static_cast<std::int64_t>(p.parent));
-    j.key("depth").value(static_cast<std::int64_t>(p.depth)).key("piece");
-    put(j, p.piece);
-    j.key("collar");
-    put(j, p.collar);
-    j.key("center");
-    put(j, p.center);
-    j.key("v0");
-    put(j, p.v0);
-    j.key("v1");
-    put(j, p.v1);
-    j.key("radius").value(p.radius).key("epsilon").value(p.epsilon).end_object();
+    a.push_back({{"index", i},
+                 {"kind", kind_name(p.kind)},
+                 {"component", p.component},
+                 {"parent", p.parent},
+                 {"depth", p.depth},
+                 {"piece", put(p.piece)},
+                 {"collar", put(p.collar)},
+                 {"center", put(p.center)},
+                 {"v0", put(p.v0)},
+                 {"v1", put(p.v1)},
+                 {"radius", p.radius},
+                 {"epsilon", p.epsilon}});
   }
-  j.end_array();
+  return a;
 }
 
-void put_model(JsonWriter& j, const Scene& s, const reactive::Diffeomorphism& h) {
-  j.key("model").begin_object().key("boundary");
-  put(j, h.model().boundary);
-  j.key("disks");
-  put(j, h.model().disks);
-  j.key("convex");
-  put(j, h.model().convex);
-  j.key("start");
-  put(j, h.map(s.start));
-  j.key("goal");
-  put(j, h.map(s.goal));
-  j.end_object();
+Json put_model(const Scene& s, const reactive::Diffeomorphism& h) {
+  return {{"boundary", put(h.model().boundary)},
+          {"disks", put(h.model().disks)},
+          {"convex", put(h.model().convex)},
+          {"start", put(h.map(s.start))},
+          {"goal", put(h.map(s.goal))}};
 }
 
-void put_paths(JsonWriter& j, const std::vector<PathRun>& runs) {
-  j.key("paths").begin_array();
+Json put_paths(const std::vector<PathRun>& runs) {
+  Json a = Json::array();
   for (const PathRun& r : runs) {
-    j.begin_object().key("start");
-    put(j, r.start.x);
-    j.key("heading").value(r.start.psi).key("status").value(r.status);
-    j.key("time").value(r.time);
     std::vector<Point> xs;
-    j.key("headings").begin_array();
+    Json headings = Json::array();
     for (const reactive::Pose& p : r.poses) {
       xs.push_back(p.x);
-      j.value(p.psi);
+      headings.push_back(p.psi);
     }
-    j.end_array().key("mapped");
-    put(j, xs);
-    j.key("model");
-    put(j, r.model);
-    j.end_object();
+    a.push_back({{"start", put(r.start.x)},
+                 {"heading", r.start.psi},
+                 {"status", r.status},
+                 {"time", r.time},
+                 {"headings", headings},
+                 {"mapped", put(xs)},
+                 {"model", put(r.model)}});
   }
-  j.end_array();
+  return a;
+}
+
+// The whole of diffeo.json, compact (drawing data), numbers to kJsonDigits digits.
+std::string diffeo_json(const DiffeoArgs& a, const Scene& s, const reactive::MappedSpace& m,
+                        const reactive::Diffeomorphism& h, const std::vector<PathRun>& runs) {
+  Json j = put_header(a, s, h.params());
+  j["mapped"] = put_mapped(m);
+  j["purges"] = put_purges(h);
+  j["model"] = put_model(s, h);
+  j["grid"] = put_grid(m, h);
+  j["boundary_images"] = put_boundary_images(m, h);
+  j["paths"] = put_paths(runs);
+  round_numbers(j, kJsonDigits);
+  return j.dump(-1, ' ', false, Json::error_handler_t::replace) + "\n";
 }
 
 void report(const reactive::MappedSpace& m, const reactive::Diffeomorphism& h,
@@ -484,18 +485,8 @@ int diffeo(DiffeoArgs a) {
   int reached = 0;
   for (const PathRun& r : runs) reached += r.status == "reached";
 
-  JsonWriter j(false, kJsonDigits);
-  j.begin_object();
-  put_header(j, a, scene, h.params());
-  put_mapped(j, m);
-  put_purges(j, h);
-  put_model(j, scene, h);
-  put_grid(j, m, h);
-  put_boundary_images(j, m, h);
-  put_paths(j, runs);
-  j.end_object();
   const fs::path json_path = fs::path(a.out_dir) / "diffeo.json";
-  write_file_atomically(json_path.string(), j.str() + "\n");
+  write_file_atomically(json_path.string(), diffeo_json(a, scene, m, h, runs));
   report(m, h, runs, reached);
   std::printf("wrote %s\n", json_path.string().c_str());
   if (!a.no_plot) {

@@ -1,11 +1,10 @@
 #include "experiment/run_scenario.h"
 
-#include <cmath>
+#include <nlohmann/json.hpp>
 #include <utility>
 
 #include "core/error.h"
 #include "executive/kinematic_plant.h"
-#include "experiment/json_writer.h"
 #include "experiment/sim_plant.h"
 #include "experiment/task_from_scenario.h"
 #include "perception/sensor.h"
@@ -14,14 +13,29 @@
 namespace rearm::experiment {
 namespace {
 
-void point(JsonWriter& j, const geometry::Point& p) {
-  j.begin_array().value(p.x()).value(p.y()).end_array();
+// Objects keep their keys in insertion order (the order the files have always had); nlohmann
+// writes non-finite numbers as null and every double in its shortest form that reads back
+// exactly, so identical runs write identical bytes.
+using Json = nlohmann::ordered_json;
+constexpr int kIndent = 2;  // metrics.json is for people: two spaces per level
+
+// The document's text ending in a newline; invalid UTF-8 in a name becomes U+FFFD.
+std::string text(const Json& j, int indent = -1) {
+  return j.dump(indent, ' ', false, Json::error_handler_t::replace) + "\n";
 }
 
-void polygon(JsonWriter& j, const geometry::Polygon& p) {
-  j.begin_array();
-  for (const auto& v : p.vertices) point(j, v);
-  j.end_array();
+Json point(const geometry::Point& p) { return {p.x(), p.y()}; }
+
+Json polygon(const geometry::Polygon& p) {
+  Json a = Json::array();
+  for (const auto& v : p.vertices) a.push_back(point(v));
+  return a;
+}
+
+Json clearance_by_kind(const geometry::ClearanceByKind& c) {
+  Json j = Json::object();
+  for (const ClearanceKind& k : kClearanceKinds) j[k.name] = c.*k.value;
+  return j;
 }
 
 }  // namespace
@@ -72,189 +86,142 @@ RunRecord run_scenario(const scenario::Scenario& s, const RunOptions& o) {
   return r;
 }
 
-void clearance_by_kind_json(JsonWriter& j, const geometry::ClearanceByKind& c) {
-  j.key("min_clearance_by_kind").begin_object();
-  for (const auto& [name, value] : {std::pair<const char*, double>{"familiar", c.familiar},
-                                    {"unknown", c.unknown},
-                                    {"objects", c.objects},
-                                    {"boundary", c.boundary}}) {
-    j.key(name);
-    if (std::isfinite(value)) {
-      j.value(value);
-    } else {
-      j.null();
-    }
+namespace {
+
+Json actions_json(const std::vector<executive::ActionRecord>& actions) {
+  Json a = Json::array();
+  for (const executive::ActionRecord& r : actions) {
+    a.push_back({{"action", r.action},
+                 {"fix_mode", r.fix},
+                 {"outcome", executive::to_string(r.outcome)},
+                 {"reason", r.reason},
+                 {"t_start_s", r.t_start},
+                 {"t_end_s", r.t_end}});
   }
-  j.end_object();
+  return a;
 }
+
+Json objects_json(const scenario::Scenario& s, const RunRecord& r) {
+  Json a = Json::array();
+  for (std::size_t i = 0; i < s.objects.size(); ++i) {
+    a.push_back({{"name", s.objects[i].name},
+                 {"start", point(r.objects_start[i])},
+                 {"end", point(r.objects_end[i])}});
+  }
+  return a;
+}
+
+}  // namespace
 
 std::string metrics_json(const scenario::Scenario& s, const RunRecord& r) {
   const executive::TaskResult& t = r.result;
-  JsonWriter j(true);
-  j.begin_object();
-  j.key("scenario").value(s.name);
-  j.key("source").value(s.source);
-  j.key("plant").value(to_string(r.plant));
-  j.key("seed").value(r.seed);
-  j.key("task").value(s.task);
-  j.key("status").value(executive::to_string(t.status));
-  j.key("reason").value(t.reason);
-  j.key("collisions").value(t.collisions);
-  j.key("collision_events").begin_array();
-  for (const std::string& e : t.collision_events) j.value(e);
-  j.end_array();
-  j.key("min_clearance").value(t.min_clearance);
-  clearance_by_kind_json(j, t.clearance_by_kind);
-  j.key("sim_time_s").value(t.sim_time);
-  j.key("steps").value(t.steps);
-  j.key("dt_s").value(s.simulation.dt);
-  j.key("wall_time_s").value(t.wall_time);
-  j.key("controller_time_s").value(t.controller_time);
-  j.key("real_time_factor").value(r.real_time_factor());
-  j.key("fix_mode_entries").value(t.fix_mode_entries);
-  j.key("recoveries").begin_object();
-  for (const executive::RecoveryField& f : executive::kRecoveryFields) {
-    j.key(f.name).value(t.recoveries.*f.count);
-  }
-  j.end_object();
-  j.key("robot_path_length_m").value(t.robot_path_length);
-  j.key("object_path_length_m").value(t.object_path_length);
-  j.key("rebuilds").value(t.rebuilds);
-  j.key("topology_checks").value(t.topology_checks);
-  j.key("actions").begin_array();
-  for (const executive::ActionRecord& a : t.actions) {
-    j.begin_object();
-    j.key("action").value(a.action);
-    j.key("fix_mode").value(a.fix);
-    j.key("outcome").value(executive::to_string(a.outcome));
-    j.key("reason").value(a.reason);
-    j.key("t_start_s").value(a.t_start);
-    j.key("t_end_s").value(a.t_end);
-    j.end_object();
-  }
-  j.end_array();
-  j.key("objects").begin_array();
-  for (std::size_t i = 0; i < s.objects.size(); ++i) {
-    j.begin_object();
-    j.key("name").value(s.objects[i].name);
-    j.key("start")
-        .begin_array()
-        .value(r.objects_start[i].x())
-        .value(r.objects_start[i].y())
-        .end_array();
-    j.key("end").begin_array().value(r.objects_end[i].x()).value(r.objects_end[i].y()).end_array();
-    j.end_object();
-  }
-  j.end_array();
-  j.end_object();
-  return j.str();
+  Json recoveries = Json::object();
+  for (const executive::RecoveryField& f : executive::kRecoveryFields)
+    recoveries[f.name] = t.recoveries.*f.count;
+  const Json j = {{"scenario", s.name},
+                  {"source", s.source},
+                  {"plant", to_string(r.plant)},
+                  {"seed", r.seed},
+                  {"task", s.task},
+                  {"status", executive::to_string(t.status)},
+                  {"reason", t.reason},
+                  {"collisions", t.collisions},
+                  {"collision_events", t.collision_events},
+                  {"min_clearance", t.min_clearance},
+                  {"min_clearance_by_kind", clearance_by_kind(t.clearance_by_kind)},
+                  {"sim_time_s", t.sim_time},
+                  {"steps", t.steps},
+                  {"dt_s", s.simulation.dt},
+                  {"wall_time_s", t.wall_time},
+                  {"controller_time_s", t.controller_time},
+                  {"real_time_factor", r.real_time_factor()},
+                  {"fix_mode_entries", t.fix_mode_entries},
+                  {"recoveries", recoveries},
+                  {"robot_path_length_m", t.robot_path_length},
+                  {"object_path_length_m", t.object_path_length},
+                  {"rebuilds", t.rebuilds},
+                  {"topology_checks", t.topology_checks},
+                  {"actions", actions_json(t.actions)},
+                  {"objects", objects_json(s, r)}};
+  return text(j, kIndent);
 }
 
 namespace {
 
-void region_json(JsonWriter& j, const geometry::Region& r) {
-  j.begin_object().key("outer");
-  polygon(j, r.outer);
-  j.key("holes").begin_array();
-  for (const geometry::Polygon& h : r.holes) polygon(j, h);
-  j.end_array().end_object();
+Json region_json(const geometry::Region& r) {
+  Json holes = Json::array();
+  for (const geometry::Polygon& h : r.holes) holes.push_back(polygon(h));
+  return {{"outer", polygon(r.outer)}, {"holes", holes}};
 }
 
 // "model_path": the law's model point at the robot samples (null where the command was not the
 // law's); "spaces": each build's F_k, F_e and model space (boundary, disks [x, y, r], convex).
-void spaces_json(JsonWriter& j, const executive::TaskResult& t, int stride) {
-  j.key("model_path").begin_array();
-  for (std::size_t k = 0; k < t.model_path.size(); k += static_cast<std::size_t>(stride)) {
-    if (t.model_path[k].allFinite()) {
-      point(j, t.model_path[k]);
-    } else {
-      j.null();
-    }
-  }
-  j.end_array();
-  j.key("spaces").begin_array();
+void spaces_json(Json& j, const executive::TaskResult& t, std::size_t stride) {
+  Json& model_path = j["model_path"] = Json::array();
+  for (std::size_t k = 0; k < t.model_path.size(); k += stride)
+    model_path.push_back(t.model_path[k].allFinite() ? point(t.model_path[k]) : Json());
+  Json& spaces = j["spaces"] = Json::array();
   for (const executive::SpacesSnapshot& s : t.spaces) {
-    j.begin_object().key("t").value(s.t).key("freespace");
-    region_json(j, s.freespace);
-    j.key("enclosing");
-    polygon(j, s.enclosing);
-    j.key("model").begin_object().key("boundary");
-    polygon(j, s.model.boundary);
-    j.key("disks").begin_array();
-    for (const geometry::Disk& d : s.model.disks) {
-      j.begin_array().value(d.center.x()).value(d.center.y()).value(d.radius).end_array();
-    }
-    j.end_array().key("convex").begin_array();
-    for (const geometry::Polygon& c : s.model.convex) polygon(j, c);
-    j.end_array().end_object().end_object();
+    Json disks = Json::array(), convex = Json::array();
+    for (const geometry::Disk& d : s.model.disks)
+      disks.push_back({d.center.x(), d.center.y(), d.radius});
+    for (const geometry::Polygon& c : s.model.convex) convex.push_back(polygon(c));
+    spaces.push_back(
+        {{"t", s.t},
+         {"freespace", region_json(s.freespace)},
+         {"enclosing", polygon(s.enclosing)},
+         {"model",
+          {{"boundary", polygon(s.model.boundary)}, {"disks", disks}, {"convex", convex}}}});
   }
-  j.end_array();
+}
+
+// {name, polygon} of each familiar obstacle, unknown obstacle or region.
+template <typename Named>
+Json named_polygons(const std::vector<Named>& items) {
+  Json a = Json::array();
+  for (const Named& x : items) a.push_back({{"name", x.name}, {"polygon", polygon(x.polygon)}});
+  return a;
 }
 
 }  // namespace
 
 std::string trajectory_json(const scenario::Scenario& s, const RunRecord& r, int stride) {
   if (stride < 1) throw Error("trajectory: stride must be >= 1");
+  const auto st = static_cast<std::size_t>(stride);
   const executive::TaskResult& t = r.result;
-  JsonWriter j;
-  j.begin_object();
-  j.key("scenario").value(s.name);
-  j.key("task").value(s.task);
-  j.key("status").value(executive::to_string(t.status));
-  j.key("robot_radius").value(s.robot.radius);
-  j.key("sensor_range").value(s.robot.sensor_range);
-  j.key("workspace");
-  polygon(j, s.workspace);
-  j.key("familiar").begin_array();
-  for (std::size_t i = 0; i < s.familiar.size(); ++i) {
-    j.begin_object().key("name").value(s.familiar[i].name).key("polygon");
-    polygon(j, s.familiar[i].polygon);
-    j.key("localized_at").value(r.localized_at[i]).end_object();
-  }
-  j.end_array();
-  j.key("unknown").begin_array();
-  for (const auto& u : s.unknown) {
-    j.begin_object().key("name").value(u.name).key("polygon");
-    polygon(j, u.polygon);
-    j.end_object();
-  }
-  j.end_array();
-  j.key("regions").begin_array();
-  for (const auto& g : s.regions) {
-    j.begin_object().key("name").value(g.name).key("polygon");
-    polygon(j, g.polygon);
-    j.end_object();
-  }
-  j.end_array();
-  j.key("objects").begin_array();
-  for (const auto& o : s.objects) {
-    j.begin_object().key("name").value(o.name).key("radius").value(o.disk.radius).end_object();
-  }
-  j.end_array();
-  j.key("dt").value(s.simulation.dt * stride);
-  j.key("robot").begin_array();
-  for (std::size_t k = 0; k < t.path.size(); k += static_cast<std::size_t>(stride)) {
-    j.begin_array().value(t.path[k].x.x()).value(t.path[k].x.y()).value(t.path[k].psi).end_array();
-  }
-  j.end_array();
-  j.key("object_paths").begin_array();
+  Json j = {{"scenario", s.name},
+            {"task", s.task},
+            {"status", executive::to_string(t.status)},
+            {"robot_radius", s.robot.radius},
+            {"sensor_range", s.robot.sensor_range},
+            {"workspace", polygon(s.workspace)},
+            {"familiar", named_polygons(s.familiar)},
+            {"unknown", named_polygons(s.unknown)},
+            {"regions", named_polygons(s.regions)},
+            {"objects", Json::array()},
+            {"dt", s.simulation.dt * stride},
+            {"robot", Json::array()},
+            {"object_paths", Json::array()}};
+  for (std::size_t i = 0; i < s.familiar.size(); ++i)
+    j["familiar"][i]["localized_at"] = r.localized_at[i];
+  for (const auto& o : s.objects)
+    j["objects"].push_back({{"name", o.name}, {"radius", o.disk.radius}});
+  for (std::size_t k = 0; k < t.path.size(); k += st)
+    j["robot"].push_back({t.path[k].x.x(), t.path[k].x.y(), t.path[k].psi});
   for (const auto& path : t.object_paths) {
-    j.begin_array();
-    for (std::size_t k = 0; k < path.size(); k += static_cast<std::size_t>(stride))
-      point(j, path[k]);
-    j.end_array();
+    Json& p = j["object_paths"].emplace_back(Json::array());
+    for (std::size_t k = 0; k < path.size(); k += st) p.push_back(point(path[k]));
   }
-  j.end_array();
-  if (!t.spaces.empty()) spaces_json(j, t, stride);
-  j.key("actions").begin_array();
+  if (!t.spaces.empty()) spaces_json(j, t, st);
+  Json& actions = j["actions"] = Json::array();
   for (const executive::ActionRecord& a : t.actions) {
-    j.begin_object().key("action").value(a.action).key("fix_mode").value(a.fix);
-    j.key("outcome").value(executive::to_string(a.outcome));
-    j.key("t_start").value(a.t_start).key("t_end").value(a.t_end).end_object();
+    actions.push_back({{"action", a.action},
+                       {"fix_mode", a.fix},
+                       {"outcome", executive::to_string(a.outcome)},
+                       {"t_start", a.t_start},
+                       {"t_end", a.t_end}});
   }
-  j.end_array();
-  j.end_object();
-  return j.str();
+  return text(j);
 }
 
 }  // namespace rearm::experiment

@@ -9,7 +9,6 @@
 #include <vector>
 
 #include "executive/task_runner.h"
-#include "experiment/json_writer.h"
 #include "geometry/clearance_by_kind.h"
 #include "scenario/scenario.h"
 
@@ -46,9 +45,17 @@ struct RunRecord {
 // rearm::Error); every outcome of the run itself is in the record.
 RunRecord run_scenario(const scenario::Scenario& s, const RunOptions& o = {});
 
-// "min_clearance_by_kind": {familiar, unknown, objects, boundary} (null for a kind never
-// measured), the key of rearm run's and the baselines' metrics.json.
-void clearance_by_kind_json(JsonWriter& j, const geometry::ClearanceByKind& c);
+// The entries of "min_clearance_by_kind" in rearm run's and the baselines' metrics.json, in file
+// order: {familiar, unknown, objects, boundary} (null for a kind never measured, +infinity).
+struct ClearanceKind {
+  const char* name;
+  double geometry::ClearanceByKind::*value;
+};
+inline constexpr ClearanceKind kClearanceKinds[] = {
+    {"familiar", &geometry::ClearanceByKind::familiar},
+    {"unknown", &geometry::ClearanceByKind::unknown},
+    {"objects", &geometry::ClearanceByKind::objects},
+    {"boundary", &geometry::ClearanceByKind::boundary}};
 
 // metrics.json: status, reason, collisions, min_clearance, sim_time_s, wall_time_s,
 // controller_time_s, real_time_factor, actions (with Fix-mode marks), fix_mode_entries,

@@ -9,8 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
-#include <regex>
-#include <sstream>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -43,23 +42,18 @@ struct Committed {
   int fix_mode_entries = -1;
 };
 
-// The committed metrics.json read with regular expressions over its fixed layout (one action
-// object per group of lines: "action", "fix_mode", "outcome").
+// The committed metrics.json: its succeeded actions (with their Fix-mode marks) and Fix-mode
+// entries; no steps when the file is missing or does not parse.
 Committed committed(const std::string& scene) {
   std::ifstream in("results/debian12-2core/" + scene + "/metrics.json");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  const std::string text = ss.str();
+  const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
   Committed c;
-  static const std::regex action(
-      R"re("action": "([^"]+)",\s*"fix_mode": (true|false),\s*"outcome": "([a-z_]+)")re");
-  for (auto it = std::sregex_iterator(text.begin(), text.end(), action);
-       it != std::sregex_iterator(); ++it) {
-    if ((*it)[3] == "succeeded") c.steps.push_back({(*it)[1], (*it)[2] == "true"});
+  if (!j.is_object()) return c;
+  for (const nlohmann::json& a : j.value("actions", nlohmann::json::array())) {
+    if (a.value("outcome", "") == "succeeded")
+      c.steps.push_back({a.value("action", ""), a.value("fix_mode", false)});
   }
-  static const std::regex entries(R"re("fix_mode_entries": (\d+))re");
-  std::smatch m;
-  if (std::regex_search(text, m, entries)) c.fix_mode_entries = std::stoi(m[1]);
+  c.fix_mode_entries = j.value("fix_mode_entries", -1);
   return c;
 }
 

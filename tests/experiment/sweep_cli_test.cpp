@@ -17,6 +17,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -196,17 +197,6 @@ TEST_F(SweepCli, OmplBenchmarkStatisticsReadsTheLogs) {
   EXPECT_EQ(object_counts, scenario::load_sweep_file(kSmoke).objects.size());
 }
 
-// The value of "key": in a metrics.json written by the JSON writer ("" when absent).
-std::string json_value(const std::string& json, const std::string& key) {
-  const std::string k = "\"" + key + "\": ";
-  const std::size_t at = json.find(k);
-  if (at == std::string::npos) return "";
-  std::size_t end = json.find_first_of(",\n}", at + k.size());
-  std::string v = json.substr(at + k.size(), end - at - k.size());
-  if (!v.empty() && v.front() == '"') v = v.substr(1, v.size() - 2);
-  return v;
-}
-
 TEST_F(SweepCli, KeptInstancesReproduceTheirRows) {
   const CsvTable t = read_csv((*reference_dir_ / "trials.csv").string());
   int checked = 0;
@@ -224,11 +214,10 @@ TEST_F(SweepCli, KeptInstancesReproduceTheirRows) {
                   " --no-plot --no-animation --out " + out.string();
     ASSERT_EQ(run(args), 0) << args;
     std::ifstream in(out / "metrics.json");
-    std::stringstream json;
-    json << in.rdbuf();
-    EXPECT_EQ(json_value(json.str(), "status"), "completed") << args;
-    EXPECT_DOUBLE_EQ(std::stod(json_value(json.str(), "sim_time_s")),
-                     std::stod(row[t.column("sim_time_s")]))
+    const nlohmann::json metrics = nlohmann::json::parse(in, nullptr, false);
+    ASSERT_TRUE(metrics.is_object()) << args << ": metrics.json does not parse";
+    EXPECT_EQ(metrics.value("status", ""), "completed") << args;
+    EXPECT_DOUBLE_EQ(metrics.value("sim_time_s", -1.0), std::stod(row[t.column("sim_time_s")]))
         << args;
     ++checked;
   }
