@@ -2,11 +2,11 @@
 
 #include <chrono>
 #include <cmath>
-#include <nlohmann/json.hpp>
 
 #include "baselines/validator.h"
 #include "core/error.h"
 #include "core/rng.h"
+#include "experiment/json_internal.h"
 #include "experiment/known_obstacles.h"
 #include "experiment/run_scenario.h"
 #include "experiment/task_from_scenario.h"
@@ -257,23 +257,13 @@ void run_replanning(const scenario::Scenario& s, const RearrangementProblem& ful
   if (r.status.empty()) set_status_from_execution(r, full);
 }
 
-// Objects keep their keys in insertion order, the order of rearm run's files
-// (experiment/run_scenario.h); non-finite numbers are written as null.
-using Json = nlohmann::ordered_json;
-constexpr int kIndent = 2;  // metrics.json is for people: two spaces per level
-
-// The document's text ending in a newline; invalid UTF-8 in a name becomes U+FFFD.
-std::string text(const Json& j, int indent = -1) {
-  return j.dump(indent, ' ', false, Json::error_handler_t::replace) + "\n";
-}
-
-Json point(const geometry::Point& p) { return {p.x(), p.y()}; }
-
-Json polygon(const geometry::Polygon& p) {
-  Json a = Json::array();
-  for (const auto& v : p.vertices) a.push_back(point(v));
-  return a;
-}
+// The pieces of rearm run's files (experiment/json_internal.h): the same key order and numbers.
+using experiment::json::Json;
+using experiment::json::kIndent;
+using experiment::json::named_polygons;
+using experiment::json::point;
+using experiment::json::polygon;
+using experiment::json::text;
 
 }  // namespace
 
@@ -397,18 +387,6 @@ std::string baseline_metrics_json(const scenario::Scenario& s, const BaselineRec
   j["violations"] = r.violations;
   return text(j, kIndent);
 }
-
-namespace {
-
-// {name, polygon} of each unknown obstacle or region.
-template <typename Named>
-Json named_polygons(const std::vector<Named>& items) {
-  Json a = Json::array();
-  for (const Named& x : items) a.push_back({{"name", x.name}, {"polygon", polygon(x.polygon)}});
-  return a;
-}
-
-}  // namespace
 
 std::string baseline_trajectory_json(const scenario::Scenario& s, const BaselineRecord& r,
                                      int stride) {

@@ -28,7 +28,7 @@ THIRD_PARTY = {
     "tbb/": (("framework/experiment",), ()),
     "oneapi/tbb": (("framework/experiment",), ()),
     "ompl/": (("baselines",), ()),
-    "nlohmann/": (("framework/experiment", "baselines"), ()),
+    "nlohmann/": (("framework/experiment", "baselines"), ("framework/experiment/json_internal.h",)),
 }
 
 

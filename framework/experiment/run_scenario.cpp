@@ -1,10 +1,10 @@
 #include "experiment/run_scenario.h"
 
-#include <nlohmann/json.hpp>
 #include <utility>
 
 #include "core/error.h"
 #include "executive/kinematic_plant.h"
+#include "experiment/json_internal.h"
 #include "experiment/sim_plant.h"
 #include "experiment/task_from_scenario.h"
 #include "perception/sensor.h"
@@ -13,24 +13,12 @@
 namespace rearm::experiment {
 namespace {
 
-// Objects keep their keys in insertion order (the order the files have always had); nlohmann
-// writes non-finite numbers as null and every double in its shortest form that reads back
-// exactly, so identical runs write identical bytes.
-using Json = nlohmann::ordered_json;
-constexpr int kIndent = 2;  // metrics.json is for people: two spaces per level
-
-// The document's text ending in a newline; invalid UTF-8 in a name becomes U+FFFD.
-std::string text(const Json& j, int indent = -1) {
-  return j.dump(indent, ' ', false, Json::error_handler_t::replace) + "\n";
-}
-
-Json point(const geometry::Point& p) { return {p.x(), p.y()}; }
-
-Json polygon(const geometry::Polygon& p) {
-  Json a = Json::array();
-  for (const auto& v : p.vertices) a.push_back(point(v));
-  return a;
-}
+using json::Json;
+using json::kIndent;
+using json::named_polygons;
+using json::point;
+using json::polygon;
+using json::text;
 
 Json clearance_by_kind(const geometry::ClearanceByKind& c) {
   Json j = Json::object();
@@ -173,14 +161,6 @@ void spaces_json(Json& j, const executive::TaskResult& t, std::size_t stride) {
          {"model",
           {{"boundary", polygon(s.model.boundary)}, {"disks", disks}, {"convex", convex}}}});
   }
-}
-
-// {name, polygon} of each familiar obstacle, unknown obstacle or region.
-template <typename Named>
-Json named_polygons(const std::vector<Named>& items) {
-  Json a = Json::array();
-  for (const Named& x : items) a.push_back({{"name", x.name}, {"polygon", polygon(x.polygon)}});
-  return a;
 }
 
 }  // namespace
