@@ -293,9 +293,11 @@ void add_pockets(MappedSpace& m, const Dilated& d, double scale, double sliver) 
     Polygon pocket = drop_flat_vertices(r.outer);
     auto lid = find_lid(pocket, m.enclosing, kLidTolerance * scale);
     if (!lid) {
-      throw Error(
+      // A bug, not bad input: every pocket of the hull has an edge on it. Per trial (the sweep's
+      // status `error`, `rearm run`'s exit 1), not `stuck` and not an abort of the whole sweep.
+      throw InvariantViolation(
           "mapped space: a pocket of the freespace's convex hull has no edge on the hull "
-          "(internal error; please report the scene)");
+          "(please report the scene)");
     }
     const bool curved = std::any_of(d.sources.begin(), d.sources.end(), [&](const auto& s) {
       return s.kind != Dilated::Kind::kFamiliar && geometry::contains(r.outer, s.rep);

@@ -126,17 +126,6 @@ Eigen::AlignedBox2d bounds(const Polygon& p) {
 }
 
 // One obstacle could not be placed: random_scene starts the scene over.
-class PlacementFailed : public Error {
- public:
-  using Error::Error;
-};
-
-[[noreturn]] void placement_failed(const char* what, int index, int attempts) {
-  throw PlacementFailed(std::string("random_scene: could not place ") + what + " " +
-                        std::to_string(index) + " within " + std::to_string(attempts) +
-                        " attempts (scene too crowded for the margin)");
-}
-
 }  // namespace
 
 reactive::SemanticInput to_semantic_input(const ReactiveScene& s) {
@@ -256,184 +245,233 @@ Polygon make_workspace(WorkspaceShape shape, double s) {
 
 namespace {
 
-ReactiveScene random_scene_once(Rng& rng, const SceneOptions& o) {
-  ReactiveScene scene;
-  scene.workspace = make_workspace(o.workspace_shape, o.workspace_size);
-  scene.robot_radius = o.robot_radius;
-  scene.sensor_range = o.sensor_range;
-  const Polygon& W = scene.workspace;
-  const RegionSet W_set = geometry::to_set(W);
-  const Eigen::AlignedBox2d box = bounds(W);
-  const double r = o.robot_radius;
-  const double half = r + o.margin / 2;
-  const RegionSet inner = geometry::erode(W, half);
-  std::vector<Footprint> placed;
+// One attempt at a scene (random_scene starts over on a failure): the obstacles placed one at a
+// time in a fixed order of draws from rng, so a scene is a function of the generator's state.
+// A placement that fails within max_attempts is a value (draw() returns nullopt, failure() says
+// which); the generator's stream continues into the next attempt.
+class SceneDrawer {
+ public:
+  SceneDrawer(Rng& rng, const SceneOptions& o)
+      : rng_(rng),
+        o_(o),
+        W_(make_workspace(o.workspace_shape, o.workspace_size)),
+        W_set_(geometry::to_set(W_)),
+        box_(bounds(W_)),
+        r_(o.robot_radius),
+        half_(o.robot_radius + o.margin / 2),
+        inner_(geometry::erode(W_, half_)) {}
 
-  auto draw_shape = [&](Shape& shape, double& size) {
-    shape = o.shapes[rng.index(o.shapes.size())];
-    size = rng.uniform(o.familiar_min_size, o.familiar_max_size);
-    const double thick = size * rng.uniform(o.thickness_fraction_min, o.thickness_fraction_max);
-    const double angle = rng.uniform(0, 2 * std::numbers::pi);
+  std::optional<ReactiveScene> draw() {
+    scene_.workspace = W_;
+    scene_.robot_radius = o_.robot_radius;
+    scene_.sensor_range = o_.sensor_range;
+    // Walls attached to the boundary first: they need the most room.
+    for (int i = 0; i < o_.boundary_touching; ++i) {
+      if (!place_wall()) return fail("boundary-touching familiar obstacle", i);
+    }
+    for (int i = o_.boundary_touching; i < o_.familiar; ++i) {
+      auto q = place_inside<Polygon>([&](const Point& c) { return familiar_at(c); });
+      if (!q) return fail("familiar obstacle", i);
+      scene_.familiar.push_back(std::move(*q));
+    }
+    for (int i = 0; i < o_.unknown; ++i) {
+      auto q = place_inside<Polygon>([&](const Point& c) { return unknown_at(c); });
+      if (!q) return fail("unknown obstacle", i);
+      scene_.unknown.push_back(std::move(*q));
+    }
+    for (int i = 0; i < o_.movable; ++i) {
+      auto d = place_inside<Disk>([&](const Point& c) { return movable_at(c); });
+      if (!d) return fail("movable object", i);
+      scene_.movable.push_back(*d);
+    }
+    scene_.goal = goal();
+    return std::move(scene_);
+  }
+
+  const std::string& failure() const { return failure_; }
+
+ private:
+  template <class T>
+  using Made = std::optional<std::pair<T, Footprint>>;
+
+  std::nullopt_t fail(const char* what, int index) {
+    failure_ = std::string("random_scene: could not place ") + what + " " + std::to_string(index) +
+               " within " + std::to_string(o_.max_attempts) +
+               " attempts (scene too crowded for the margin)";
+    return std::nullopt;
+  }
+
+  // A familiar obstacle's shape, extent, arm width and rotation, in this order of draws.
+  std::tuple<double, double> draw_shape(Shape& shape, double& size) {
+    shape = o_.shapes[rng_.index(o_.shapes.size())];
+    size = rng_.uniform(o_.familiar_min_size, o_.familiar_max_size);
+    const double thick = size * rng_.uniform(o_.thickness_fraction_min, o_.thickness_fraction_max);
+    const double angle = rng_.uniform(0, 2 * std::numbers::pi);
     return std::make_tuple(thick, angle);
-  };
+  }
 
   // A star's dilation may close a notch into a hole (a freespace pocket of its own); the
   // fixed shapes with arm widths below size/2 cannot.
-  auto dilation_has_no_hole = [&](Shape shape, const Polygon& p) {
-    return shape != Shape::kStar || single_simple_region(geometry::dilate_miter(p, r));
-  };
+  bool dilation_has_no_hole(Shape shape, const Polygon& p) const {
+    return shape != Shape::kStar || single_simple_region(geometry::dilate_miter(p, r_));
+  }
 
-  // Walls attached to the boundary first: they need the most room.
-  for (int i = 0; i < o.boundary_touching; ++i) {
-    const std::size_t n = W.size();
+  // A point on the boundary, uniform by arc length: the edge's start, direction and the
+  // point.
+  std::tuple<Point, Point> boundary_point() {
+    const std::size_t n = W_.size();
     double perimeter = 0;
-    for (std::size_t k = 0; k < n; ++k) {
-      perimeter += (W.vertices[(k + 1) % n] - W.vertices[k]).norm();
+    for (std::size_t k = 0; k < n; ++k)
+      perimeter += (W_.vertices[(k + 1) % n] - W_.vertices[k]).norm();
+    double t = rng_.uniform(0, perimeter);
+    std::size_t e = 0;
+    for (; e + 1 < n; ++e) {
+      const double len = (W_.vertices[e + 1] - W_.vertices[e]).norm();
+      if (t < len) break;
+      t -= len;
     }
-    bool done = false;
-    for (int attempt = 0; attempt < o.max_attempts && !done; ++attempt) {
+    const Point a = W_.vertices[e], b = W_.vertices[(e + 1) % n];
+    const Point dir = (b - a).normalized();
+    return {Point(a + t * dir), dir};
+  }
+
+  // One wall crossing the boundary, within max_attempts.
+  bool place_wall() {
+    for (int attempt = 0; attempt < o_.max_attempts; ++attempt) {
       Shape shape;
       double size;
       const auto [thick, angle] = draw_shape(shape, size);
-      // A point on the boundary, uniform by arc length.
-      double t = rng.uniform(0, perimeter);
-      std::size_t e = 0;
-      for (; e + 1 < n; ++e) {
-        const double len = (W.vertices[e + 1] - W.vertices[e]).norm();
-        if (t < len) break;
-        t -= len;
-      }
-      const Point a = W.vertices[e], b = W.vertices[(e + 1) % n];
-      const Point dir = (b - a).normalized();
+      const auto [on_edge, dir] = boundary_point();
       const Point inward(-dir.y(), dir.x());  // W is counter-clockwise
-      const Point on_edge = a + t * dir;
-      const Point center = on_edge + rng.uniform(-0.1, 0.35) * size * inward;
-      const Polygon p = make_shape(rng, shape, size, thick, angle, center);
-      const RegionSet p_set = geometry::to_set(p);
-      if (geometry::subtract(p_set, W_set).empty()) continue;  // must cross the boundary
-      const RegionSet clipped = geometry::intersect(p_set, W_set);
-      if (!single_simple_region(clipped)) continue;
-      const Polygon q = geometry::remove_collinear(clipped[0].outer, 1e-9);
-      if (q.size() < 3 || q.area() < kMinClippedFraction * p.area()) continue;
-      // Away from the corners, so the pocket it forms has one lid on one edge.
-      bool near_corner = false;
-      for (const Point& v : W.vertices) {
-        if (geometry::distance(q, v) < 2 * r + o.margin) near_corner = true;
+      const Point center = on_edge + rng_.uniform(-0.1, 0.35) * size * inward;
+      const Polygon p = make_shape(rng_, shape, size, thick, angle, center);
+      if (std::optional<Polygon> q = wall_of(p, shape)) {
+        scene_.familiar.push_back(std::move(*q));
+        return true;
       }
-      if (near_corner || !dilation_has_no_hole(shape, q)) continue;
-      Footprint f = footprint(geometry::dilate_miter(q, half));
-      if (!separated(f, placed)) continue;
-      // It must not cut the freespace in two (e.g. a U whose opening faces the wall).
-      if (geometry::subtract(inner, f.set).size() != 1) continue;
-      placed.push_back(std::move(f));
-      scene.familiar.push_back(q);
-      done = true;
     }
-    if (!done) placement_failed("boundary-touching familiar obstacle", i, o.max_attempts);
+    return false;
   }
 
-  // Everything else: inside the eroded workspace, pairwise separated. make(c) returns the
-  // obstacle centred near c and its footprint, or nullopt to draw again.
+  // The part of p inside W when it makes an acceptable wall (placed: its footprint recorded).
+  std::optional<Polygon> wall_of(const Polygon& p, Shape shape) {
+    const RegionSet p_set = geometry::to_set(p);
+    if (geometry::subtract(p_set, W_set_).empty()) return std::nullopt;  // must cross the boundary
+    const RegionSet clipped = geometry::intersect(p_set, W_set_);
+    if (!single_simple_region(clipped)) return std::nullopt;
+    const Polygon q = geometry::remove_collinear(clipped[0].outer, 1e-9);
+    if (q.size() < 3 || q.area() < kMinClippedFraction * p.area()) return std::nullopt;
+    // Away from the corners, so the pocket it forms has one lid on one edge.
+    bool near_corner = false;
+    for (const Point& v : W_.vertices) {
+      if (geometry::distance(q, v) < 2 * r_ + o_.margin) near_corner = true;
+    }
+    if (near_corner || !dilation_has_no_hole(shape, q)) return std::nullopt;
+    Footprint f = footprint(geometry::dilate_miter(q, half_));
+    if (!separated(f, placed_)) return std::nullopt;
+    // It must not cut the freespace in two (e.g. a U whose opening faces the wall).
+    if (geometry::subtract(inner_, f.set).size() != 1) return std::nullopt;
+    placed_.push_back(std::move(f));
+    return q;
+  }
+
   // A necessary condition checked before the costly dilation: the disk of radius `half` around
   // every vertex lies in the footprint, which must lie in `inner` (a subset of the erosion by
   // half) and avoid the footprints placed so far.
-  auto plausible = [&](const Polygon& q) {
+  bool plausible(const Polygon& q) const {
     for (const Point& v : q.vertices) {
-      if (!geometry::contains(W, v) || geometry::nearest_on_boundary(W, v).distance < 2 * half) {
+      if (!geometry::contains(W_, v) || geometry::nearest_on_boundary(W_, v).distance < 2 * half_) {
         return false;
       }
-      for (const Footprint& g : placed) {
+      for (const Footprint& g : placed_) {
         if ((v - g.center).norm() <= g.radius && geometry::contains(g.set, v)) return false;
       }
     }
     return true;
-  };
+  }
 
-  auto place_inside = [&](auto make, const char* what, int index) {
-    for (int attempt = 0; attempt < o.max_attempts; ++attempt) {
-      const Point c = uniform_in(rng, box);
-      if (!geometry::contains(W, c)) continue;
-      auto made = make(c);
+  // Everything but the walls: inside the eroded workspace, pairwise separated. make(c) returns
+  // the obstacle centred near c and its footprint, or nullopt to draw again.
+  template <class T, class Make>
+  std::optional<T> place_inside(Make make) {
+    for (int attempt = 0; attempt < o_.max_attempts; ++attempt) {
+      const Point c = uniform_in(rng_, box_);
+      if (!geometry::contains(W_, c)) continue;
+      Made<T> made = make(c);
       if (!made) continue;
-      if (!geometry::subtract(made->second.set, inner).empty()) continue;
-      if (!separated(made->second, placed)) continue;
-      placed.push_back(std::move(made->second));
+      if (!geometry::subtract(made->second.set, inner_).empty()) continue;
+      if (!separated(made->second, placed_)) continue;
+      placed_.push_back(std::move(made->second));
       return std::move(made->first);
     }
-    placement_failed(what, index, o.max_attempts);
-  };
+    return std::nullopt;
+  }
 
-  for (int i = o.boundary_touching; i < o.familiar; ++i) {
-    scene.familiar.push_back(place_inside(
-        [&](const Point& c) -> std::optional<std::pair<Polygon, Footprint>> {
-          Shape shape;
-          double size;
-          const auto [thick, angle] = draw_shape(shape, size);
-          Polygon q = make_shape(rng, shape, size, thick, angle, c);
-          if (!plausible(q) || !dilation_has_no_hole(shape, q)) return std::nullopt;
-          Footprint f = footprint(geometry::dilate_miter(q, half));
-          return std::make_pair(std::move(q), std::move(f));
-        },
-        "familiar obstacle", i));
+  Made<Polygon> familiar_at(const Point& c) {
+    Shape shape;
+    double size;
+    const auto [thick, angle] = draw_shape(shape, size);
+    Polygon q = make_shape(rng_, shape, size, thick, angle, c);
+    if (!plausible(q) || !dilation_has_no_hole(shape, q)) return std::nullopt;
+    Footprint f = footprint(geometry::dilate_miter(q, half_));
+    return std::make_pair(std::move(q), std::move(f));
   }
-  for (int i = 0; i < o.unknown; ++i) {
-    scene.unknown.push_back(place_inside(
-        [&](const Point& c) -> std::optional<std::pair<Polygon, Footprint>> {
-          const double rho = rng.uniform(o.unknown_min_radius, o.unknown_max_radius);
-          Polygon q = o.round_unknown
-                          ? geometry::regular_polygon(geometry::Disk{c, rho}, kRoundSides, false)
-                          : random_convex(rng, c, rho);
-          if (!plausible(q)) return std::nullopt;
-          Footprint f = footprint(geometry::dilate_miter(q, half));
-          return std::make_pair(std::move(q), std::move(f));
-        },
-        "unknown obstacle", i));
+
+  Made<Polygon> unknown_at(const Point& c) {
+    const double rho = rng_.uniform(o_.unknown_min_radius, o_.unknown_max_radius);
+    Polygon q = o_.round_unknown
+                    ? geometry::regular_polygon(geometry::Disk{c, rho}, kRoundSides, false)
+                    : random_convex(rng_, c, rho);
+    if (!plausible(q)) return std::nullopt;
+    Footprint f = footprint(geometry::dilate_miter(q, half_));
+    return std::make_pair(std::move(q), std::move(f));
   }
-  for (int i = 0; i < o.movable; ++i) {
-    scene.movable.push_back(place_inside(
-        [&](const Point& c) -> std::optional<std::pair<Disk, Footprint>> {
-          const Disk d{c, rng.uniform(o.movable_min_radius, o.movable_max_radius)};
-          if (geometry::nearest_on_boundary(W, c).distance < d.radius + 2 * half) {
-            return std::nullopt;
-          }
-          Footprint f =
-              footprint(geometry::to_set(geometry::disk_polygon(Disk{c, d.radius + half})));
-          return std::make_pair(d, std::move(f));
-        },
-        "movable object", i));
+
+  Made<Disk> movable_at(const Point& c) {
+    const Disk d{c, rng_.uniform(o_.movable_min_radius, o_.movable_max_radius)};
+    if (geometry::nearest_on_boundary(W_, c).distance < d.radius + 2 * half_) return std::nullopt;
+    Footprint f = footprint(geometry::to_set(geometry::disk_polygon(Disk{c, d.radius + half_})));
+    return std::make_pair(d, std::move(f));
   }
 
   // The goal: a free point with clearance from every dilated obstacle and the eroded boundary.
-  const double g = r + o.goal_clearance;
-  const RegionSet goal_inner = geometry::erode(W, g);
-  std::vector<RegionSet> blocked;
-  for (const Polygon& p : scene.familiar) blocked.push_back(geometry::dilate_miter(p, g));
-  for (const Polygon& p : scene.unknown) blocked.push_back(geometry::dilate_miter(p, g));
-  for (int attempt = 0;; ++attempt) {
-    if (attempt == kFreePointAttempts) throw Error("random_scene: no free goal found");
-    const Point x = uniform_in(rng, box);
-    if (!geometry::contains(goal_inner, x)) continue;
-    bool free = true;
-    for (const RegionSet& b : blocked) free = free && !geometry::contains(b, x);
-    for (const Disk& d : scene.movable) free = free && (x - d.center).norm() >= d.radius + g;
-    if (free) {
-      scene.goal = x;
-      break;
+  Point goal() {
+    const double g = r_ + o_.goal_clearance;
+    const RegionSet goal_inner = geometry::erode(W_, g);
+    std::vector<RegionSet> blocked;
+    for (const Polygon& p : scene_.familiar) blocked.push_back(geometry::dilate_miter(p, g));
+    for (const Polygon& p : scene_.unknown) blocked.push_back(geometry::dilate_miter(p, g));
+    for (int attempt = 0; attempt < kFreePointAttempts; ++attempt) {
+      const Point x = uniform_in(rng_, box_);
+      if (!geometry::contains(goal_inner, x)) continue;
+      bool free = true;
+      for (const RegionSet& b : blocked) free = free && !geometry::contains(b, x);
+      for (const Disk& d : scene_.movable) free = free && (x - d.center).norm() >= d.radius + g;
+      if (free) return x;
     }
+    throw Error("random_scene: no free goal found");
   }
-  return scene;
-}
+
+  Rng& rng_;
+  const SceneOptions& o_;
+  const Polygon W_;
+  const RegionSet W_set_;
+  const Eigen::AlignedBox2d box_;
+  const double r_, half_;
+  const RegionSet inner_;
+  std::vector<Footprint> placed_;
+  ReactiveScene scene_;
+  std::string failure_;
+};
 
 }  // namespace
 
 ReactiveScene random_scene(Rng& rng, const SceneOptions& o) {
   check_options(o);
   for (int restart = 0;; ++restart) {
-    try {
-      return random_scene_once(rng, o);
-    } catch (const PlacementFailed&) {
-      if (restart + 1 >= o.max_restarts) throw;
-    }
+    SceneDrawer drawer(rng, o);
+    if (std::optional<ReactiveScene> scene = drawer.draw()) return std::move(*scene);
+    if (restart + 1 >= o.max_restarts) throw Error(drawer.failure());
   }
 }
 
