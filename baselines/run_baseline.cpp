@@ -335,9 +335,7 @@ Json objects_json(const scenario::Scenario& s, const ExecutionLog& e) {
 // The keys every metrics.json has (those of rearm run's, experiment::metrics_json).
 Json common_metrics(const scenario::Scenario& s, const BaselineRecord& r) {
   const ExecutionLog& e = r.execution;
-  Json by_kind = Json::object(), recoveries = Json::object();
-  for (const experiment::ClearanceKind& k : experiment::kClearanceKinds)
-    by_kind[k.name] = e.clearance_by_kind.*k.value;
+  Json recoveries = Json::object();
   for (const std::string& k : experiment::recovery_names()) recoveries[k] = 0;  // rearm's only
   return {{"scenario", s.name},
           {"source", s.source},
@@ -349,7 +347,7 @@ Json common_metrics(const scenario::Scenario& s, const BaselineRecord& r) {
           {"collisions", e.collisions},
           {"collision_events", e.collision_events},
           {"min_clearance", e.min_clearance},
-          {"min_clearance_by_kind", by_kind},
+          {"min_clearance_by_kind", experiment::json::clearance_by_kind(e.clearance_by_kind)},
           {"sim_time_s", e.sim_time},
           {"steps", e.steps},
           {"dt_s", s.simulation.dt},

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "experiment/run_scenario.h"
 #include "geometry/polygon.h"
 
 namespace rearm::experiment::json {
@@ -27,6 +28,13 @@ inline Json polygon(const geometry::Polygon& p) {
   Json a = Json::array();
   for (const auto& v : p.vertices) a.push_back(point(v));
   return a;
+}
+
+// "min_clearance_by_kind" of a metrics.json (kClearanceKinds, in file order).
+inline Json clearance_by_kind(const geometry::ClearanceByKind& c) {
+  Json j = Json::object();
+  for (const ClearanceKind& k : kClearanceKinds) j[k.name] = c.*k.value;
+  return j;
 }
 
 // {name, polygon} of each familiar obstacle, unknown obstacle or region.

@@ -13,18 +13,13 @@
 namespace rearm::experiment {
 namespace {
 
+using json::clearance_by_kind;
 using json::Json;
 using json::kIndent;
 using json::named_polygons;
 using json::point;
 using json::polygon;
 using json::text;
-
-Json clearance_by_kind(const geometry::ClearanceByKind& c) {
-  Json j = Json::object();
-  for (const ClearanceKind& k : kClearanceKinds) j[k.name] = c.*k.value;
-  return j;
-}
 
 }  // namespace
 
