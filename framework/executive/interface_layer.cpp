@@ -7,7 +7,6 @@
 #include <string>
 
 #include "core/error.h"
-#include "geometry/boolean.h"
 #include "geometry/dilation.h"
 #include "geometry/distance.h"
 
@@ -44,15 +43,6 @@ double known_clearance(const perception::SemanticMap& map, const Point& x,
     best = std::min(best, (disks[i].center - x).norm() - disks[i].radius);
   }
   return best;
-}
-
-geometry::RegionSet freespace_of(const topology::TopologyInput& in) {
-  geometry::RegionSet obstacles;
-  for (const geometry::RegionSet& f : in.fixed) obstacles = geometry::unite(obstacles, f);
-  if (!in.movable.empty()) {
-    obstacles = geometry::unite(obstacles, geometry::unite_all(in.movable));
-  }
-  return geometry::subtract(in.bound, obstacles);
 }
 
 namespace {

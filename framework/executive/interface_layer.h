@@ -23,10 +23,6 @@ using geometry::Point;
 double known_clearance(const perception::SemanticMap& map, const Point& x,
                        std::string_view except = {});
 
-// F_list of Appendix III without the choice of a component: bound − ∪(fixed ∪ movable), on
-// exact Booleans (geometry/boolean.h).
-geometry::RegionSet freespace_of(const topology::TopologyInput& in);
-
 // GRASP(M_i): where the robot stands before gripping (paper §IV: "a collision-free location on
 // the boundary of object M_i, contained in the freespace F").
 struct GraspParams {

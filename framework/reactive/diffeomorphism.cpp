@@ -15,6 +15,7 @@
 #include "core/error.h"
 #include "geometry/dilation.h"
 #include "geometry/partition.h"
+#include "reactive/pth_root.h"
 
 namespace rearm::reactive {
 namespace {
@@ -64,7 +65,8 @@ double ipow(double x, int k) {
 // R-conjunction of the negated half-plane values, to order O (the value alone, with the
 // gradient, or with the Hessian too; the value and gradient are the same whichever).
 template <DiffeoOrder O>
-Scalar2 r_conjunction(const std::vector<HalfPlane>& planes, const Point& y, int p) {
+Scalar2 r_conjunction(const std::vector<HalfPlane>& planes, const Point& y, const PthRoot& root) {
+  const int p = root.p();
   constexpr bool kGradient = O != DiffeoOrder::kValue;
   constexpr bool kHessian = O == DiffeoOrder::kHessian;
   Scalar2 acc;
@@ -78,11 +80,15 @@ Scalar2 r_conjunction(const std::vector<HalfPlane>& planes, const Point& y, int 
       if constexpr (kGradient) acc.g += -planes[k].normal;
       continue;
     }
-    const double as = a / m, bs = b / m;
-    const double ap2 = ipow(as, p - 2), bp2 = ipow(bs, p - 2);
+    // One of a/m, b/m is ±1 exactly, whose even power p − 2 is 1: only the other is raised.
+    const bool a_is_max = std::abs(a) >= std::abs(b);
+    const double as = a_is_max ? std::copysign(1.0, a) : a / m;
+    const double bs = a_is_max ? b / m : std::copysign(1.0, b);
+    const double ap2 = a_is_max ? 1.0 : ipow(as, p - 2);
+    const double bp2 = a_is_max ? ipow(bs, p - 2) : 1.0;
     const double ap1 = ap2 * as, bp1 = bp2 * bs;
     const double s = ap1 * as + bp1 * bs;  // in [1, 2]
-    const double t = std::pow(s, 1.0 / p);
+    const double t = root(s);
     if constexpr (kGradient) {
       const Vector2d bg = -planes[k].normal;
       const double t1 = t / s;  // s^{1/p − 1}
@@ -689,6 +695,7 @@ Outcome<Diffeomorphism> Diffeomorphism::try_build(const MappedSpace& m, const Di
   }
   Diffeomorphism d;
   d.params_ = params;
+  d.root_ = &PthRoot::of(params.p);
   d.model_.boundary = m.enclosing;
   d.model_.convex = m.unknown;
 
@@ -871,8 +878,8 @@ void compose(DiffeoEval& out, const Vector2d& w, const Switch& sw, const Factor&
 }
 
 template <DiffeoOrder O>
-DiffeoEval evaluate_to(const std::vector<Purge>& purges, const DiffeoParams& prm, const Point& x,
-                       std::size_t count) {
+DiffeoEval evaluate_to(const std::vector<Purge>& purges, const DiffeoParams& prm,
+                       const PthRoot& root, const Point& x, std::size_t count) {
   DiffeoEval out;
   out.h = x;
   count = std::min(count, purges.size());
@@ -884,7 +891,7 @@ DiffeoEval evaluate_to(const std::vector<Purge>& purges, const DiffeoParams& prm
     // β >= max_i of the half-plane values: at least ε there, and σ_β = 0 without evaluating it.
     if (beyond_collar(pu.beta_planes, y, prm.epsilon)) continue;
     // §3.5–3.6: β (negative inside the piece) and its switch.
-    Scalar2 beta = r_conjunction<O>(pu.beta_planes, y, prm.p);
+    Scalar2 beta = r_conjunction<O>(pu.beta_planes, y, root);
     beta.v = -beta.v;
     beta.g = -beta.g;
     beta.H = -beta.H;
@@ -893,7 +900,7 @@ DiffeoEval evaluate_to(const std::vector<Purge>& purges, const DiffeoParams& prm
     if (beta.v <= kBoundarySnap) {
       sw.sigma = 1;  // on or inside the piece: fully purged (its interior is not freespace)
     } else {
-      const Scalar2 gamma = r_conjunction<O>(pu.gamma_planes, y, prm.p);
+      const Scalar2 gamma = r_conjunction<O>(pu.gamma_planes, y, root);
       if (gamma.v <= 0) continue;
       sw = switch_of<O>(pu, y, beta, gamma, prm);
     }
@@ -906,15 +913,17 @@ DiffeoEval evaluate_to(const std::vector<Purge>& purges, const DiffeoParams& prm
 }  // namespace
 
 DiffeoEval Diffeomorphism::evaluate(const Point& x, std::size_t count, DiffeoOrder order) const {
+  // A default-constructed Diffeomorphism (no purges) has no table yet.
+  const PthRoot& root = root_ ? *root_ : PthRoot::of(params_.p);
   switch (order) {
     case DiffeoOrder::kValue:
-      return evaluate_to<DiffeoOrder::kValue>(purges_, params_, x, count);
+      return evaluate_to<DiffeoOrder::kValue>(purges_, params_, root, x, count);
     case DiffeoOrder::kJacobian:
-      return evaluate_to<DiffeoOrder::kJacobian>(purges_, params_, x, count);
+      return evaluate_to<DiffeoOrder::kJacobian>(purges_, params_, root, x, count);
     case DiffeoOrder::kHessian:
       break;
   }
-  return evaluate_to<DiffeoOrder::kHessian>(purges_, params_, x, count);
+  return evaluate_to<DiffeoOrder::kHessian>(purges_, params_, root, x, count);
 }
 
 }  // namespace rearm::reactive

@@ -37,6 +37,8 @@
 
 namespace rearm::reactive {
 
+class PthRoot;
+
 // h(x), its Jacobian J = Dh(x) and second derivatives H[k](i, j) = ∂²h_k / ∂x_i ∂x_j.
 // How much of an evaluation to compute: h alone, h and Dh, or h, Dh and D²h (the fields not
 // computed keep their defaults). h and Dh are the same, bit for bit, at every order.
@@ -124,6 +126,7 @@ class Diffeomorphism {
 
  private:
   DiffeoParams params_;
+  const PthRoot* root_ = nullptr;  // s^{1/p} of the R-conjunctions (shared table of p)
   ModelSpace model_;
   std::vector<Purge> purges_;  // in composition order
 };

@@ -5,6 +5,7 @@
 #include <numbers>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "core/error.h"
 #include "geometry/distance.h"
@@ -40,6 +41,22 @@ HalfPlane bisector(const Point& y, const Point& p, double d) {
   return HalfPlane{u, u.dot(y) + 0.5 * d};
 }
 
+// The vertices (cos a, sin a), a = 2πi/sides, of the unit sensing polygon, kept per thread for
+// the last `sides` asked (one per controller in practice): the law asks for them every tick.
+const std::vector<Point>& unit_polygon(int sides) {
+  thread_local std::vector<Point> vertices;
+  thread_local int cached_sides = 0;
+  if (cached_sides != sides) {
+    vertices.clear();
+    for (int i = 0; i < sides; ++i) {
+      const double a = 2 * std::numbers::pi * i / sides;
+      vertices.emplace_back(std::cos(a), std::sin(a));
+    }
+    cached_sides = sides;
+  }
+  return vertices;
+}
+
 [[noreturn]] void not_free(const std::string& what) {
   throw OutsideModelFreespace("local_freespace: the point y is not in the model freespace (" +
                               what + ")");
@@ -60,10 +77,7 @@ void local_freespace(const ModelSpace& m, const Point& y, double sensor_range, P
   // Start from the inscribed sensing polygon, written straight into `out`.
   out.vertices.clear();
   const double half_range = 0.5 * sensor_range;
-  for (int i = 0; i < sides; ++i) {
-    const double a = 2 * std::numbers::pi * i / sides;
-    out.vertices.emplace_back(y + half_range * Point(std::cos(a), std::sin(a)));
-  }
+  for (const Point& u : unit_polygon(sides)) out.vertices.emplace_back(y + half_range * u);
   const auto apply = [&](const HalfPlane& h) {
     clip_into(out, h, scratch);
     std::swap(out.vertices, scratch.vertices);

@@ -396,6 +396,33 @@ void TopologyCache::set_miter_limit(double limit) {
 
 // --- The check ---
 
+namespace {
+
+// bound − ∪fixed from the cache (bound and fixed validated when first seen).
+std::shared_ptr<const detail::ExactFreespace> fixed_freespace(
+    const TopologyInput& in, std::unique_ptr<TopologyCache::Impl>& cache) {
+  if (in.bound.empty()) throw Error("topology: the bound (initial freespace) is empty");
+  if (!cache) cache = std::make_unique<TopologyCache::Impl>();  // moved from
+  return cache->freespace(in.bound, in.fixed);
+}
+
+std::vector<Polygon> validated_movable(const TopologyInput& in) {
+  std::vector<Polygon> out;
+  out.reserve(in.movable.size());
+  for (std::size_t i = 0; i < in.movable.size(); ++i) {
+    const std::string what = "topology: movable object " + std::to_string(i);
+    out.push_back(geometry::validated(in.movable[i], what.c_str()));
+  }
+  return out;
+}
+
+}  // namespace
+
+RegionSet freespace_components(const TopologyInput& in, TopologyCache& cache) {
+  const std::shared_ptr<const detail::ExactFreespace> fixed_free = fixed_freespace(in, cache.impl_);
+  return fixed_free->subtract(validated_movable(in));
+}
+
 TopologyResult check_topology(const TopologyInput& in) {
   TopologyCache fresh;
   return check_topology(in, fresh);
@@ -409,17 +436,12 @@ TopologyResult check_topology(const TopologyInput& raw, TopologyCache& cache) {
     throw Error("topology: " + std::to_string(raw.movable_ids.size()) + " movable ids for " +
                 std::to_string(raw.movable.size()) + " movable objects");
   }
-  if (!cache.impl_) cache.impl_ = std::make_unique<TopologyCache::Impl>();  // moved from
-  // bound − ∪fixed (bound and fixed validated when first seen).
   const std::shared_ptr<const detail::ExactFreespace> fixed_free =
-      cache.impl_->freespace(raw.bound, raw.fixed);
+      fixed_freespace(raw, cache.impl_);
   TopologyInput in;
   in.x = raw.x;
   in.target = raw.target;
-  for (std::size_t i = 0; i < raw.movable.size(); ++i) {
-    const std::string what = "topology: movable object " + std::to_string(i);
-    in.movable.push_back(geometry::validated(raw.movable[i], what.c_str()));
-  }
+  in.movable = validated_movable(raw);
   auto id = [&raw](std::size_t k) { return raw.movable_ids.empty() ? k : raw.movable_ids[k]; };
 
   // Step 1: F_list = (bound − ∪fixed) − ∪movable, F and F_e.

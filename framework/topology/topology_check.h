@@ -123,10 +123,11 @@ class CenterNotFree : public Error {
 // freespace (inside an obstacle's dilation or outside the bound).
 TopologyResult check_topology(const TopologyInput& in);
 
-// Entries a TopologyCache keeps: sets bound − ∪fixed (the robot alone and a robot–object pair
-// or two are the usual working set; the least recently used is dropped), and dilations
+// Entries a TopologyCache keeps: sets bound − ∪fixed (an executive's working set: the robot
+// at r and at its planning radius, the pair while carrying, and the pair's GRASP freespace with
+// its margin, per object radius; the least recently used is dropped), and dilations
 // (familiar polygons, workspace erosions; emptied when full, as reactive::DilationCache).
-inline constexpr std::size_t kTopologyCacheFreespaces = 4;
+inline constexpr std::size_t kTopologyCacheFreespaces = 6;
 inline constexpr std::size_t kTopologyCacheDilations = 256;
 
 // What stays the same between the topology checks of one executive: the exact set
@@ -157,6 +158,7 @@ class TopologyCache {
  private:
   std::unique_ptr<Impl> impl_;
   friend TopologyResult check_topology(const TopologyInput& in, TopologyCache& cache);
+  friend geometry::RegionSet freespace_components(const TopologyInput& in, TopologyCache& cache);
   friend TopologyInput make_input(const geometry::Polygon& workspace,
                                   const std::vector<geometry::Polygon>& familiar,
                                   const std::vector<geometry::Disk>& objects, double radius,
@@ -170,6 +172,13 @@ class TopologyCache {
 // dilated obstacles reach the workspace boundary or each other (~0.7 ms of 1.1–1.4 ms at 10
 // objects and 20 obstacles, carrying; results/debian12-2core/topology.md).
 TopologyResult check_topology(const TopologyInput& in, TopologyCache& cache);
+
+// Step 1 of Appendix III alone: F_list, the components of (bound − ∪fixed) − ∪movable, with
+// bound − ∪fixed taken from (or added to) `cache` and the objects subtracted by the localized
+// Booleans (the sets of one global exact overlay; only the order of the components and the
+// first vertex of a loop may differ). x and target are not used. Throws rearm::Error for an
+// empty bound or an invalid polygon.
+geometry::RegionSet freespace_components(const TopologyInput& in, TopologyCache& cache);
 
 // Builds the input for a robot of radius `radius` (or a robot–object pair, radius r + ρ_i):
 //  - bound: the workspace (a simple polygon) eroded by radius: W minus the stadiums

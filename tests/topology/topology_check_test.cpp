@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "geometry/boolean.h"
 #include "geometry/convex.h"
 #include "geometry/polygon.h"
 
@@ -235,6 +236,33 @@ TEST(TopologyCheckPair, GapTheRobotFitsThroughButThePairDoesNot) {
   EXPECT_EQ(pair.verdict, Verdict::kBlockedByFixed) << pair.reason;
   // Not carrying it, the object at x would put x inside its dilation.
   EXPECT_THROW(check_topology(make_input(kRoom, walls, objects, kRobot, {2, 2}, {5, 8})), Error);
+}
+
+// F_list alone (step 1), against one global exact overlay of the same dilations: the same
+// sets (each difference empty), warm cache or not.
+TEST(TopologyCheck, FreespaceComponentsAreTheGlobalOverlay) {
+  const std::vector<Disk> objects{{{5.0, 5.0}, 0.5}, {{8.0, 2.0}, 0.4}, {{1.0, 8.0}, 0.3}};
+  TopologyCache cache;
+  for (const double radius : {kRobot, kPair}) {
+    const TopologyInput in =
+        make_input(kRoom, wall_with_door(4.2, 5.8), objects, radius, {2, 2}, {5, 8}, {}, cache);
+    geometry::RegionSet obstacles = geometry::unite_all(in.movable);
+    for (const geometry::RegionSet& f : in.fixed) obstacles = geometry::unite(obstacles, f);
+    const geometry::RegionSet want = geometry::subtract(in.bound, obstacles);
+    for (int pass = 0; pass < 2; ++pass) {
+      const geometry::RegionSet got = freespace_components(in, cache);
+      EXPECT_EQ(got.size(), want.size());
+      EXPECT_TRUE(geometry::subtract(got, want).empty()) << radius;
+      EXPECT_TRUE(geometry::subtract(want, got).empty()) << radius;
+    }
+  }
+  // The object in the door splits the room: two components (above and below the wall).
+  const TopologyInput robot =
+      make_input(kRoom, wall_with_door(4.2, 5.8), objects, kRobot, {2, 2}, {5, 8});
+  EXPECT_EQ(freespace_components(robot, cache).size(), 2u);
+  TopologyInput empty = robot;
+  empty.bound.clear();
+  EXPECT_THROW(freespace_components(empty, cache), Error);
 }
 
 // --- Direct inputs and bad input. ---
