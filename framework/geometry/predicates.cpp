@@ -19,6 +19,10 @@
 namespace rearm::geometry {
 namespace {
 
+// Up to this many vertices the simplicity test checks all pairs of edges (box-filtered): below
+// it that is faster than CGAL's sweep, whose set and sort dominate small polygons.
+constexpr std::size_t kPairwiseSimplicityMax = 64;
+
 using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
 using EPoint = Epick::Point_2;
 
@@ -97,6 +101,74 @@ void demand_finite(const Region& r) {
   for (const Polygon& h : r.holes) demand_finite(h, "contains: region hole");
 }
 
+// The sign of every turn of p when all its turns are strict and of one sign and its edge
+// direction goes round exactly once, else 0. Such a polygon is convex and simple (a closed
+// polygon whose turns all have one sign and whose direction turns by 2π in all bounds a convex
+// region), which is all checked_polygon's sweep would establish. Exact: the turns are exact
+// predicates; the direction's half (angle in [0, π) or [π, 2π)) follows from the signs of the
+// edge vector's coordinates, which a floating-point difference of doubles gets right. The
+// direction turns monotonically by less than π a vertex, so it enters [0, π) from [π, 2π) once
+// per full turn, whichever its sense.
+int strictly_convex_orientation(const Polygon& p) {
+  const auto upper = [](const Point& d) { return d.y() > 0 || (d.y() == 0 && d.x() > 0); };
+  const std::size_t n = p.size();
+  int sign = 0;
+  int entries = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Point& a = p.vertices[i];
+    const Point& b = p.vertices[(i + 1) % n];
+    const Point& c = p.vertices[(i + 2) % n];
+    const int turn = orientation(a, b, c);
+    if (turn == 0 || (sign != 0 && turn != sign)) return 0;
+    sign = turn;
+    if (!upper(b - a) && upper(c - b)) ++entries;
+  }
+  return entries == 1 ? sign : 0;
+}
+
+// Is q on the closed segment [a, b], given that a, b and q are collinear?
+bool within_box(const Point& a, const Point& b, const Point& q) {
+  return std::min(a.x(), b.x()) <= q.x() && q.x() <= std::max(a.x(), b.x()) &&
+         std::min(a.y(), b.y()) <= q.y() && q.y() <= std::max(a.y(), b.y());
+}
+
+// Do the closed segments [a, b] and [c, d] meet? Exact (orientation predicates).
+bool segments_meet(const Point& a, const Point& b, const Point& c, const Point& d) {
+  const int o1 = orientation(a, b, c), o2 = orientation(a, b, d);
+  const int o3 = orientation(c, d, a), o4 = orientation(c, d, b);
+  if (o1 * o2 < 0 && o3 * o4 < 0) return true;
+  return (o1 == 0 && within_box(a, b, c)) || (o2 == 0 && within_box(a, b, d)) ||
+         (o3 == 0 && within_box(c, d, a)) || (o4 == 0 && within_box(c, d, b));
+}
+
+// CGAL::is_simple_2's definition by all pairs of edges, for small polygons (no sweep structure
+// to build): no two non-consecutive edges meet, and consecutive edges meet only at their shared
+// vertex (neither end folds back onto the other edge). Vertices are distinct from their
+// successors (checked before).
+bool simple_by_pairs(const Polygon& p) {
+  const std::size_t n = p.size();
+  const auto& v = p.vertices;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Point& a = v[i];
+    const Point& b = v[(i + 1) % n];
+    const Point& c = v[(i + 2) % n];
+    if (orientation(a, b, c) == 0 && (within_box(a, b, c) || within_box(b, c, a))) return false;
+    for (std::size_t j = i + 2; j < n; ++j) {
+      if (i == 0 && j == n - 1) continue;  // the closing edge is consecutive with edge 0
+      const Point& d = v[j];
+      const Point& e = v[(j + 1) % n];
+      if (std::max(a.x(), b.x()) < std::min(d.x(), e.x()) ||
+          std::max(d.x(), e.x()) < std::min(a.x(), b.x()) ||
+          std::max(a.y(), b.y()) < std::min(d.y(), e.y()) ||
+          std::max(d.y(), e.y()) < std::min(a.y(), b.y())) {
+        continue;
+      }
+      if (segments_meet(a, b, d, e)) return false;
+    }
+  }
+  return true;
+}
+
 }  // namespace
 
 Outcome<Polygon> checked_polygon(const Polygon& p, const char* what) {
@@ -114,6 +186,12 @@ Outcome<Polygon> checked_polygon(const Polygon& p, const char* what) {
                               std::to_string(j) + " coincide at " + show(p.vertices[i]));
     }
   }
+  // Most polygons here are convex (dilated disks, fragments, pieces): linear, no sweep.
+  if (const int turn = strictly_convex_orientation(p); turn != 0) {
+    Polygon out = p;
+    if (turn < 0) std::reverse(out.vertices.begin(), out.vertices.end());
+    return out;
+  }
   const std::vector<EPoint> pts = to_epick(p);
   // Zero area is checked before simplicity: a collinear polygon is also non-simple, and
   // "zero area" is the more precise report. Consecutive vertices are distinct here.
@@ -123,7 +201,10 @@ Outcome<Polygon> checked_polygon(const Polygon& p, const char* what) {
   }
   if (collinear)
     return defect(what, "zero area (all " + std::to_string(n) + " vertices collinear)");
-  if (!CGAL::is_simple_2(pts.begin(), pts.end(), Epick())) {
+  const bool simple = n <= kPairwiseSimplicityMax
+                          ? simple_by_pairs(p)
+                          : CGAL::is_simple_2(pts.begin(), pts.end(), Epick());
+  if (!simple) {
     return defect(what, "not simple (edges cross or touch away from their shared vertices)");
   }
   Polygon out = p;

@@ -135,6 +135,129 @@ TEST(PolygonTest, ValidatedRejectsSelfIntersection) {
   expect_rejected(poly({{0, 0}, {2, 0}, {2, 2}, {1, 0}, {0, 2}}), {"not simple"});
 }
 
+// Polygons whose turns all have one sign: convex and simple when the direction goes round once
+// (regular and random ellipse polygons, either sense: kept or reversed), not simple when it goes
+// round twice or more (star polygons {n/k}: every turn left, yet the edges cross).
+TEST(PolygonTest, ValidatedOneSignedTurnsAreSimpleOnlyWhenWindingOnce) {
+  const auto star = [](int n, int k, bool clockwise) {
+    Polygon p;
+    for (int i = 0; i < n; ++i) {
+      const double a = (clockwise ? -2.0 : 2.0) * std::numbers::pi * k * i / n;
+      p.vertices.emplace_back(std::cos(a), std::sin(a));
+    }
+    return p;
+  };
+  for (const bool cw : {false, true}) {
+    expect_rejected(star(5, 2, cw), {"not simple"});
+    expect_rejected(star(7, 2, cw), {"not simple"});
+    expect_rejected(star(7, 3, cw), {"not simple"});
+    expect_rejected(star(9, 4, cw), {"not simple"});
+    for (const int n : {3, 4, 32}) {
+      const Polygon p = star(n, 1, cw);
+      Polygon ccw = p;
+      if (cw) std::reverse(ccw.vertices.begin(), ccw.vertices.end());
+      EXPECT_EQ(validated(p).vertices, ccw.vertices) << n << (cw ? " clockwise" : "");
+    }
+  }
+  Rng rng(7);
+  for (int trial = 0; trial < 200; ++trial) {
+    std::vector<double> angles;
+    const int n = 3 + static_cast<int>(rng.uniform(0, 40));
+    for (int i = 0; i < n; ++i) angles.push_back(rng.uniform(0, 2 * std::numbers::pi));
+    std::sort(angles.begin(), angles.end());
+    angles.erase(std::unique(angles.begin(), angles.end()), angles.end());
+    Polygon p = test_support::ellipse_polygon(angles, rng.uniform(0.1, 5), rng.uniform(1e-3, 5),
+                                              rng.uniform(0, 3), Point(rng.uniform(-1e3, 1e3), 2));
+    if (p.size() < 3 || p.signed_area() <= 0) continue;
+    EXPECT_EQ(validated(p).vertices, p.vertices) << trial;
+    Polygon cw = p;
+    std::reverse(cw.vertices.begin(), cw.vertices.end());
+    EXPECT_EQ(validated(cw).vertices, p.vertices) << trial;
+  }
+}
+
+// Simplicity on small-integer vertices (touching, collinear overlaps and repeated vertices
+// everywhere) against the definition evaluated in exact integer arithmetic here: no two
+// non-consecutive edges meet, consecutive edges only at their shared vertex. Sizes on both
+// sides of checked_polygon's switch from all pairs of edges to CGAL's sweep (64 vertices).
+namespace exact_int {
+using I = long long;
+int orient(const Point& a, const Point& b, const Point& c) {
+  const I v = (static_cast<I>(b.x()) - static_cast<I>(a.x())) *
+                  (static_cast<I>(c.y()) - static_cast<I>(a.y())) -
+              (static_cast<I>(b.y()) - static_cast<I>(a.y())) *
+                  (static_cast<I>(c.x()) - static_cast<I>(a.x()));
+  return (v > 0) - (v < 0);
+}
+bool on_segment(const Point& a, const Point& b, const Point& q) {
+  return orient(a, b, q) == 0 && std::min(a.x(), b.x()) <= q.x() &&
+         q.x() <= std::max(a.x(), b.x()) && std::min(a.y(), b.y()) <= q.y() &&
+         q.y() <= std::max(a.y(), b.y());
+}
+bool meet(const Point& a, const Point& b, const Point& c, const Point& d) {
+  if (orient(a, b, c) * orient(a, b, d) < 0 && orient(c, d, a) * orient(c, d, b) < 0) return true;
+  return on_segment(a, b, c) || on_segment(a, b, d) || on_segment(c, d, a) || on_segment(c, d, b);
+}
+bool simple(const Polygon& p) {
+  const std::size_t n = p.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t j = i + 1; j < n; ++j) {
+      const Point &a = p.vertices[i], &b = p.vertices[(i + 1) % n];
+      const Point &c = p.vertices[j], &d = p.vertices[(j + 1) % n];
+      if (j == i + 1) {  // consecutive: b == c; d must not lie on [a, b], nor a on [c, d]
+        if (on_segment(a, b, d) || on_segment(c, d, a)) return false;
+      } else if (i == 0 && j == n - 1) {  // consecutive: d == a
+        if (on_segment(a, b, c) || on_segment(c, d, b)) return false;
+      } else if (meet(a, b, c, d)) {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+}  // namespace exact_int
+
+TEST(PolygonTest, ValidatedSimplicityMatchesTheDefinitionOnIntegerVertices) {
+  Rng rng(11);
+  int simple = 0, not_simple = 0;
+  for (int trial = 0; trial < 4000; ++trial) {
+    const bool large = trial % 4 == 0;
+    const int n =
+        large ? 60 + static_cast<int>(rng.uniform(0, 20)) : 4 + static_cast<int>(rng.uniform(0, 9));
+    Polygon p;
+    if (large) {  // a star around the centre of a 400 × 400 grid, sometimes two vertices swapped
+      for (int i = 0; i < n; ++i) {
+        const double a = 2 * std::numbers::pi * (i + rng.uniform(0.1, 0.9)) / n;
+        const double r = rng.uniform(50, 190);
+        p.vertices.emplace_back(std::round(200 + r * std::cos(a)),
+                                std::round(200 + r * std::sin(a)));
+      }
+      if (rng.uniform01() < 0.5) {
+        const auto i = static_cast<std::size_t>(rng.uniform(0, n)),
+                   j = static_cast<std::size_t>(rng.uniform(0, n));
+        std::swap(p.vertices[i], p.vertices[j]);
+      }
+    } else {
+      for (int i = 0; i < n; ++i)
+        p.vertices.emplace_back(std::floor(rng.uniform(0, 7)), std::floor(rng.uniform(0, 7)));
+    }
+    bool repeated = false;
+    for (std::size_t i = 0; i < p.size(); ++i)
+      repeated |= p.vertices[i] == p.vertices[(i + 1) % p.size()];
+    bool collinear = true;
+    for (std::size_t i = 2; i < p.size(); ++i)
+      collinear &= exact_int::orient(p.vertices[0], p.vertices[1], p.vertices[i]) == 0;
+    if (repeated || collinear) continue;
+    const Outcome<Polygon> checked = checked_polygon(p);
+    const bool want = exact_int::simple(p);
+    ASSERT_EQ(checked.ok(), want) << "trial " << trial << ", " << p.size() << " vertices"
+                                  << (checked.ok() ? "" : ": " + checked.reason());
+    (want ? simple : not_simple) += 1;
+  }
+  EXPECT_GT(simple, 500);
+  EXPECT_GT(not_simple, 500);
+}
+
 TEST(PolygonTest, ValidatedRejectsZeroArea) {
   expect_rejected(poly({{0, 0}, {1, 1}, {2, 2}}), {"zero area"});
   expect_rejected(poly({{0, 0}, {1, 0}, {3, 0}, {2, 0}}), {"zero area"});
