@@ -1,21 +1,22 @@
 #!/usr/bin/env bash
 # Side by side with an earlier revision, in one run (docs/reactive.md §2): the rearm command on
-# a fixed set of scaling-sweep instances and fig5, and the reactive rebuild benchmark, each
-# alternating old and new binaries so that both see the same machine load. Writes
-# results/$MACHINE/speed/{trials.csv,trials.md,reactive_old.json,reactive_new.json}.
+# a fixed set of scaling-sweep instances and fig5, the reactive benchmarks and the topology
+# check at 10 objects x 20 obstacles (cold and warm cache), each alternating old and new binaries
+# so that both see the same machine load. Writes results/$MACHINE/speed/{trials.csv,trials.md,
+# reactive_old.json,reactive_new.json,topology_old.json,topology_new.json}.
 #
 # Usage: bash scripts/bench_speed.sh OLD_REVISION   (e.g. b353188)
 # The old revision is built in a git worktree under build-old/ (Release, rearm and
 # reactive_bench only; about 15 min on 2 cores the first time). Environment: MACHINE (default
 # debian12-2core), BUILD (default build), OLD_BUILD (an existing build of the old revision,
-# skips the worktree). The instances are results/$MACHINE/speed/instances/,
+# skips the worktree; it needs bin/rearm, bin/reactive_bench and bin/topology_bench). The instances are results/$MACHINE/speed/instances/,
 # nine of the scaling sweep's (experiments/sweeps/scaling.yaml) across N and density; the
 # old binary takes about 1 min on them (three runs each: about 6 min in all).
 set -euo pipefail
 OLD_REV=${1:?usage: bench_speed.sh OLD_REVISION}
 source "$(dirname "$0")/lib/bench_common.sh"
 bench_prepare reactive_bench
-cmake --build "$BUILD" --target rearm -j"$(nproc)"
+cmake --build "$BUILD" --target rearm topology_bench -j"$(nproc)"
 SPEED="$OUT/speed"
 mkdir -p "$SPEED"
 if [ -z "${OLD_BUILD:-}" ]; then  # OLD_BUILD: an existing Release build of OLD_REVISION
@@ -26,7 +27,7 @@ if [ -z "${OLD_BUILD:-}" ]; then  # OLD_BUILD: an existing Release build of OLD_
   git -C "$WORK/src" checkout -q --detach "$OLD_REV"
   cmake -S "$WORK/src" -B "$WORK/build" -DCMAKE_BUILD_TYPE=Release -DREARM_SANITIZE=OFF \
     -DREARM_BUILD_BENCH=ON > /dev/null
-  cmake --build "$WORK/build" --target rearm reactive_bench -j"$(nproc)"
+  cmake --build "$WORK/build" --target rearm reactive_bench topology_bench -j"$(nproc)"
   OLD_BUILD="$WORK/build"
 fi
 OLD="$OLD_BUILD/bin"
@@ -65,6 +66,14 @@ for v in old new; do
     --benchmark_out_format=json > /dev/null
 done
 
+TFILTER='BM_Topology(FarCorner|InsideObject)(Cached)?/objects:10/obstacles:20/'
+for v in old new; do
+  bin=$([ $v = old ] && echo "$OLD" || echo "$NEW")
+  "$bin/topology_bench" --benchmark_filter="$TFILTER" --benchmark_repetitions=3 \
+    --benchmark_report_aggregates_only=true --benchmark_out="$SPEED/topology_$v.json" \
+    --benchmark_out_format=json > /dev/null
+done
+
 python3 - "$SPEED" "$OLD_REV" "$REV" "$LOAD" <<'PY'
 import csv, json, sys
 speed, old_rev, rev, load = sys.argv[1:5]
@@ -90,12 +99,13 @@ def med(path):
         if b.get("aggregate_name") == "median":
             res[b["run_name"]] = (b["real_time"], b["time_unit"])
     return res
-old, new = med(f"{speed}/reactive_old.json"), med(f"{speed}/reactive_new.json")
-out += ["", "| benchmark | old | new | ratio |", "|---|---|---|---|"]
-for name in new:
-    if name in old:
-        (a, u), (b, _) = old[name], new[name]
-        out.append(f"| {name} | {a:.4g} {u} | {b:.4g} {u} | {a / b:.2f} |")
+out += ["", "| benchmark (median of 3) | old | new | ratio |", "|---|---|---|---|"]
+for part in ("reactive", "topology"):
+    old, new = med(f"{speed}/{part}_old.json"), med(f"{speed}/{part}_new.json")
+    for name in new:
+        if name in old:
+            (a, u), (b, _) = old[name], new[name]
+            out.append(f"| {name} | {a:.4g} {u} | {b:.4g} {u} | {a / b:.2f} |")
 open(f"{speed}/trials.md", "w").write("\n".join(out) + "\n")
 print("\n".join(out))
 PY
