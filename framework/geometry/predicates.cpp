@@ -7,6 +7,7 @@
 #include <CGAL/Polygon_2_algorithms.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <sstream>
 #include <string>
@@ -148,22 +149,24 @@ bool segments_meet(const Point& a, const Point& b, const Point& c, const Point& 
 bool simple_by_pairs(const Polygon& p) {
   const std::size_t n = p.size();
   const auto& v = p.vertices;
+  std::array<std::array<double, 4>, kPairwiseSimplicityMax> box;  // x_min, x_max, y_min, y_max
+  for (std::size_t i = 0; i < n; ++i) {
+    const Point& a = v[i];
+    const Point& b = v[(i + 1) % n];
+    box[i] = {std::min(a.x(), b.x()), std::max(a.x(), b.x()), std::min(a.y(), b.y()),
+              std::max(a.y(), b.y())};
+  }
   for (std::size_t i = 0; i < n; ++i) {
     const Point& a = v[i];
     const Point& b = v[(i + 1) % n];
     const Point& c = v[(i + 2) % n];
     if (orientation(a, b, c) == 0 && (within_box(a, b, c) || within_box(b, c, a))) return false;
+    const auto& bi = box[i];
     for (std::size_t j = i + 2; j < n; ++j) {
       if (i == 0 && j == n - 1) continue;  // the closing edge is consecutive with edge 0
-      const Point& d = v[j];
-      const Point& e = v[(j + 1) % n];
-      if (std::max(a.x(), b.x()) < std::min(d.x(), e.x()) ||
-          std::max(d.x(), e.x()) < std::min(a.x(), b.x()) ||
-          std::max(a.y(), b.y()) < std::min(d.y(), e.y()) ||
-          std::max(d.y(), e.y()) < std::min(a.y(), b.y())) {
-        continue;
-      }
-      if (segments_meet(a, b, d, e)) return false;
+      const auto& bj = box[j];
+      if (bi[1] < bj[0] || bj[1] < bi[0] || bi[3] < bj[2] || bj[3] < bi[2]) continue;
+      if (segments_meet(a, b, v[j], v[(j + 1) % n])) return false;
     }
   }
   return true;
