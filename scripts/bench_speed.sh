@@ -58,21 +58,20 @@ for k in 1 2 3; do
   done
 done
 
-FILTER='(MappedSpace|DiffeoConstruction|ReactiveRebuild|UnicycleCommand)/K:(10|20)/'
-for v in old new; do
-  bin=$([ $v = old ] && echo "$OLD" || echo "$NEW")
-  "$bin/reactive_bench" --benchmark_filter="$FILTER" --benchmark_repetitions=3 \
-    --benchmark_report_aggregates_only=true --benchmark_out="$SPEED/reactive_$v.json" \
-    --benchmark_out_format=json > /dev/null
-done
-
-TFILTER='BM_Topology(FarCorner|InsideObject)(Cached)?/objects:10/obstacles:20/'
-for v in old new; do
-  bin=$([ $v = old ] && echo "$OLD" || echo "$NEW")
-  "$bin/topology_bench" --benchmark_filter="$TFILTER" --benchmark_repetitions=3 \
-    --benchmark_report_aggregates_only=true --benchmark_out="$SPEED/topology_$v.json" \
-    --benchmark_out_format=json > /dev/null
-done
+# bench_pair PROGRAM NAME FILTER: PROGRAM of the old then the new build, medians of 3 repetitions
+# into $SPEED/NAME_{old,new}.json.
+bench_pair() {
+  for v in old new; do
+    bin=$([ "$v" = old ] && echo "$OLD" || echo "$NEW")
+    "$bin/$1" --benchmark_filter="$3" --benchmark_repetitions=3 \
+      --benchmark_report_aggregates_only=true --benchmark_out="$SPEED/$2_$v.json" \
+      --benchmark_out_format=json > /dev/null
+  done
+}
+bench_pair reactive_bench reactive \
+  '(MappedSpace|DiffeoConstruction|ReactiveRebuild|UnicycleCommand)/K:(10|20)/'
+bench_pair topology_bench topology \
+  'BM_Topology(FarCorner|InsideObject)(Cached)?/objects:10/obstacles:20/'
 
 python3 - "$SPEED" "$OLD_REV" "$REV" "$LOAD" <<'PY'
 import csv, json, sys

@@ -66,14 +66,18 @@ void demand_finite(const Polygon& p, const char* what) {
 // it and inside its box; otherwise by the winding number, whose crossings are decided by the
 // exact orientation of x against each edge that spans x's height (such an edge cannot be
 // collinear with x without containing it). No allocation: this runs on every control tick.
+// Does q lie in the box of [a, b] (on the closed segment when the three are collinear)?
+bool within_box(const Point& a, const Point& b, const Point& q) {
+  return std::min(a.x(), b.x()) <= q.x() && q.x() <= std::max(a.x(), b.x()) &&
+         std::min(a.y(), b.y()) <= q.y() && q.y() <= std::max(a.y(), b.y());
+}
+
 CGAL::Bounded_side locate(const Polygon& p, const Point& x) {
   int winding = 0;
   for (std::size_t i = 0, n = p.size(); i < n; ++i) {
     const Point& a = p.vertices[i];
     const Point& b = p.vertices[(i + 1) % n];
-    if (std::min(a.x(), b.x()) <= x.x() && x.x() <= std::max(a.x(), b.x()) &&
-        std::min(a.y(), b.y()) <= x.y() && x.y() <= std::max(a.y(), b.y()) &&
-        orientation(a, b, x) == 0) {
+    if (within_box(a, b, x) && orientation(a, b, x) == 0) {
       return CGAL::ON_BOUNDARY;
     }
     if (a.y() <= x.y()) {
@@ -125,12 +129,6 @@ int strictly_convex_orientation(const Polygon& p) {
     if (!upper(b - a) && upper(c - b)) ++entries;
   }
   return entries == 1 ? sign : 0;
-}
-
-// Is q on the closed segment [a, b], given that a, b and q are collinear?
-bool within_box(const Point& a, const Point& b, const Point& q) {
-  return std::min(a.x(), b.x()) <= q.x() && q.x() <= std::max(a.x(), b.x()) &&
-         std::min(a.y(), b.y()) <= q.y() && q.y() <= std::max(a.y(), b.y());
 }
 
 // Do the closed segments [a, b] and [c, d] meet? Exact (orientation predicates).
