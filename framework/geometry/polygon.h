@@ -50,6 +50,9 @@ Outcome<Polygon> checked_polygon(const Polygon& p, const char* what = "polygon")
 bool contains(const Polygon& p, const Point& x);
 bool contains(const Region& r, const Point& x);
 bool contains(const RegionSet& s, const Point& x);
+// Where x lies relative to the polygon, exact: +1 in its interior, 0 on its boundary, −1
+// outside (either orientation; the polygon assumed valid). Non-finite input throws as above.
+int side_of(const Polygon& p, const Point& x);
 
 double total_area(const RegionSet& s);
 

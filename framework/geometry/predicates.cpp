@@ -62,16 +62,16 @@ void demand_finite(const Polygon& p, const char* what) {
   }
 }
 
-// Exact location of x relative to p (orientation-independent): on an edge when collinear with
-// it and inside its box; otherwise by the winding number, whose crossings are decided by the
-// exact orientation of x against each edge that spans x's height (such an edge cannot be
-// collinear with x without containing it). No allocation: this runs on every control tick.
 // Does q lie in the box of [a, b] (on the closed segment when the three are collinear)?
 bool within_box(const Point& a, const Point& b, const Point& q) {
   return std::min(a.x(), b.x()) <= q.x() && q.x() <= std::max(a.x(), b.x()) &&
          std::min(a.y(), b.y()) <= q.y() && q.y() <= std::max(a.y(), b.y());
 }
 
+// Exact location of x relative to p (orientation-independent): on an edge when collinear with
+// it and inside its box; otherwise by the winding number, whose crossings are decided by the
+// exact orientation of x against each edge that spans x's height (such an edge cannot be
+// collinear with x without containing it). No allocation: this runs on every control tick.
 CGAL::Bounded_side locate(const Polygon& p, const Point& x) {
   int winding = 0;
   for (std::size_t i = 0, n = p.size(); i < n; ++i) {
@@ -224,6 +224,20 @@ bool contains(const Polygon& p, const Point& x) {
   check_query(x);
   demand_finite(p, "contains: polygon");
   return locate(p, x) != CGAL::ON_UNBOUNDED_SIDE;
+}
+
+int side_of(const Polygon& p, const Point& x) {
+  check_query(x);
+  demand_finite(p, "side_of: polygon");
+  switch (locate(p, x)) {
+    case CGAL::ON_BOUNDED_SIDE:
+      return 1;
+    case CGAL::ON_BOUNDARY:
+      return 0;
+    case CGAL::ON_UNBOUNDED_SIDE:
+      break;
+  }
+  return -1;
 }
 
 bool contains(const Region& r, const Point& x) {

@@ -65,14 +65,34 @@ double box_area(const Box& b) { return (b.xmax() - b.xmin()) * (b.ymax() - b.ymi
 
 // One boundary cycle of an exact region, with its boxes and its rounding.
 struct Loop {
-  CPolygon exact;          // material on the left: outer counter-clockwise, hole clockwise
   Box box;                 // encloses the exact cycle
   std::vector<Box> edges;  // encloses each exact edge
   // The cycle rounded to doubles and cut into simple loops, as geometry::subtract returns
   // them: loops bounding material (positive area) and holes (reversed to counter-clockwise).
   std::vector<Polygon> outers;
   std::vector<Polygon> holes;
-  bool pinched = false;  // two rounded vertices coincide (so possibly two exact ones)
+  bool pinched = false;       // two rounded vertices coincide (so possibly two exact ones)
+  bool from_doubles = false;  // given in doubles (double_loop): its rounding is the cycle
+
+  // The exact cycle, material on the left: outer counter-clockwise, hole clockwise. A loop
+  // given in doubles builds it on first use (most never take part in an overlay); a Loop
+  // belongs to one TopologyCache, used by one thread.
+  const CPolygon& exact() const {
+    if (!exact_) {
+      Polygon cycle = cycle_of_doubles();
+      if (!holes.empty()) std::reverse(cycle.vertices.begin(), cycle.vertices.end());
+      exact_ = geometry::internal::to_cgal(cycle);
+    }
+    return *exact_;
+  }
+  void set_exact(CPolygon p) { exact_ = std::move(p); }
+  // A loop given in doubles: its cycle (either orientation).
+  const Polygon& cycle_of_doubles() const {
+    return outers.empty() ? holes.front() : outers.front();
+  }
+
+ private:
+  mutable std::optional<CPolygon> exact_;
 };
 using LoopPtr = std::shared_ptr<const Loop>;
 
@@ -141,25 +161,25 @@ LoopPtr exact_loop(CPolygon p, bool settle) {
   } else {
     split_rounded({Polygon{std::move(rounded)}}, *l);
   }
-  l->exact = std::move(p);
+  l->set_exact(std::move(p));
   return l;
 }
 
 // A cycle given in doubles (a validated, counter-clockwise polygon), as an outer boundary or
-// as a hole. Its rounding is itself. with_exact: also its CGAL polygon (needed when the loop
-// may take part in a later overlay).
-LoopPtr double_loop(const Polygon& p, bool hole, bool with_exact) {
+// as a hole. Its rounding is itself; its exact cycle is built when first needed.
+LoopPtr double_loop(const Polygon& p, bool hole) {
   auto l = std::make_shared<Loop>();
   (hole ? l->holes : l->outers).push_back(p);
-  Polygon cycle = p;  // in the exact loop's order: a hole runs clockwise
-  if (hole) std::reverse(cycle.vertices.begin(), cycle.vertices.end());
-  const std::size_t n = cycle.size();
+  l->from_doubles = true;
+  const std::size_t n = p.size();
   l->edges.reserve(n);
-  l->box = box_of(cycle);
+  l->box = box_of(p);
+  // Edge i of the exact cycle: a hole runs clockwise, from vertex n − 1 − i to n − 2 − i.
   for (std::size_t i = 0; i < n; ++i) {
-    l->edges.push_back(box_of(cycle.vertices[i], cycle.vertices[(i + 1) % n]));
+    const std::size_t a = hole ? n - 1 - i : i;
+    const std::size_t b = hole ? (2 * n - 2 - i) % n : (i + 1) % n;
+    l->edges.push_back(box_of(p.vertices[a], p.vertices[b]));
   }
-  if (with_exact) l->exact = geometry::internal::to_cgal(cycle);
   return l;
 }
 
@@ -170,10 +190,25 @@ Piece exact_piece(const CPolygonWithHoles& p, bool settle) {
   return out;
 }
 
-// Where q lies relative to the cycle (exact), after a box filter.
+// Is the exact point a pair of doubles (an input vertex)?
+bool is_double(const CPoint& q) {
+  const auto& a = q.approx();
+  return a.x().inf() == a.x().sup() && a.y().inf() == a.y().sup();
+}
+
+// Where q lies relative to the cycle (exact), after a box filter; a cycle and a point given in
+// doubles by exact predicates on the doubles, without building lazy exact points.
 CGAL::Bounded_side side_of(const Loop& l, const CPoint& q) {
   if (!meet(l.box, q.bbox())) return CGAL::ON_UNBOUNDED_SIDE;
-  return CGAL::bounded_side_2(l.exact.vertices_begin(), l.exact.vertices_end(), q, Kernel());
+  if (l.from_doubles && is_double(q)) {
+    const int side =
+        geometry::side_of(l.cycle_of_doubles(), Point(q.approx().x().inf(), q.approx().y().inf()));
+    return side > 0    ? CGAL::ON_BOUNDED_SIDE
+           : side == 0 ? CGAL::ON_BOUNDARY
+                       : CGAL::ON_UNBOUNDED_SIDE;
+  }
+  const CPolygon& e = l.exact();
+  return CGAL::bounded_side_2(e.vertices_begin(), e.vertices_end(), q, Kernel());
 }
 
 // Is q strictly inside the cycle? The callers know q is on no boundary.
@@ -282,10 +317,10 @@ std::vector<std::vector<std::size_t>> box_groups(const std::vector<Box>& boxes,
 // The points by which a loop is located: its vertices, then its edge midpoints (a hole of a
 // CGAL result may touch the outer cycle, or another hole, at vertices).
 std::vector<CPoint> probes(const Loop& l) {
-  std::vector<CPoint> out(l.exact.vertices_begin(), l.exact.vertices_end());
-  const std::size_t n = l.exact.size();
+  std::vector<CPoint> out(l.exact().vertices_begin(), l.exact().vertices_end());
+  const std::size_t n = l.exact().size();
   for (std::size_t i = 0; i < n; ++i) {
-    out.push_back(CGAL::midpoint(l.exact.vertex(i), l.exact.vertex((i + 1) % n)));
+    out.push_back(CGAL::midpoint(l.exact().vertex(i), l.exact().vertex((i + 1) % n)));
   }
   return out;
 }
@@ -472,12 +507,12 @@ CPolygon window_polygon(const Window& w) {
 // No vertex of the loop on ∂W, no edge through a corner of W (exact).
 bool general_position(const Loop& l, const Window& w) {
   const Box wb = w.box();
-  const std::size_t n = l.exact.size();
+  const std::size_t n = l.exact().size();
   std::array<std::optional<CPoint>, 4> corners;
   for (std::size_t i = 0; i < n; ++i) {
     if (!meet(l.edges[i], wb)) continue;
-    const CPoint& a = l.exact.vertex(i);
-    const CPoint& b = l.exact.vertex((i + 1) % n);
+    const CPoint& a = l.exact().vertex(i);
+    const CPoint& b = l.exact().vertex((i + 1) % n);
     if (on_boundary(a, w) || on_boundary(b, w)) return false;
     for (int k = 0; k < 4; ++k) {
       const Box cb =
@@ -551,11 +586,11 @@ struct Cut {
 bool cut_loop(const Loop& l, std::size_t loop, const std::vector<Window>& windows,
               const std::vector<std::size_t>& ws, Cut& cut) {
   const std::size_t first = cut.x.size();
-  const std::size_t n = l.exact.size();
+  const std::size_t n = l.exact().size();
   for (std::size_t i = 0; i < n; ++i) {
     const std::size_t edge_first = cut.x.size();
-    const CPoint& a = l.exact.vertex(i);
-    const CPoint& b = l.exact.vertex((i + 1) % n);
+    const CPoint& a = l.exact().vertex(i);
+    const CPoint& b = l.exact().vertex((i + 1) % n);
     for (std::size_t w : ws) {
       if (!meet(l.edges[i], windows[w].box())) continue;
       Crossing proto;
@@ -589,7 +624,7 @@ bool cut_loop(const Loop& l, std::size_t loop, const std::vector<Window>& window
     if (count == 0 && !(v.edge == u.edge && k + 1 < m)) count = n;
     std::vector<CPoint> pts;
     pts.reserve(count);
-    for (std::size_t t = 1; t <= count; ++t) pts.push_back(l.exact.vertex((u.edge + t) % n));
+    for (std::size_t t = 1; t <= count; ++t) pts.push_back(l.exact().vertex((u.edge + t) % n));
     cut.chain.push_back(std::move(pts));
     cut.next.push_back(j);
   }
@@ -757,9 +792,9 @@ Outcome cut_loops(const std::vector<Window>& windows, WindowedState& s) {
         if (!parts) return Outcome::kFallback;
         auto& to = hole ? s.removed[w] : s.material[w];
         to.insert(to.end(), parts->begin(), parts->end());
-      } else if (cut.x.size() == first && inside_window(l.exact.vertex(0), windows[w])) {
+      } else if (cut.x.size() == first && inside_window(l.exact().vertex(0), windows[w])) {
         s.kept[k] = 0;  // wholly inside the window: the overlay returns it
-        CPolygon p = l.exact;
+        CPolygon p = l.exact();
         if (hole) p.reverse_orientation();
         (hole ? s.removed[w] : s.material[w]).push_back(std::move(p));
       } else if (side_of(l, windows[w].corner(0)) == CGAL::ON_BOUNDED_SIDE) {
@@ -927,13 +962,13 @@ Outcome windowed(const Piece& piece, const std::vector<Window>& windows,
 std::vector<Piece> plain(const Piece& piece, const std::vector<Box>& boxes,
                          const std::vector<std::size_t>& touching,
                          const std::vector<CPolygonWithHoles>& exact, bool settle) {
-  CPolygonWithHoles kept(piece.outer->exact);
+  CPolygonWithHoles kept(piece.outer->exact());
   std::vector<LoopPtr> untouched;
   for (const LoopPtr& h : piece.holes) {
     const bool touched = std::any_of(touching.begin(), touching.end(),
                                      [&](std::size_t i) { return meet(boxes[i], h->box); });
     if (touched) {
-      kept.add_hole(h->exact);
+      kept.add_hole(h->exact());
     } else {
       untouched.push_back(h);
     }
@@ -965,7 +1000,7 @@ std::vector<Piece> plain(const Piece& piece, const std::vector<Box>& boxes,
 }
 
 // base − ∪obstacles, localized (freespace.h). settle: the result is kept (cache level), so its
-// exact coordinates are evaluated now and the obstacles' loops carry CGAL polygons.
+// exact coordinates are evaluated now (loops given in doubles make their CGAL cycles on first use).
 std::vector<Piece> difference(const std::vector<Piece>& base, const std::vector<Box>& walls,
                               const std::vector<Region>& obstacles, bool settle) {
   const std::size_t n = obstacles.size();
@@ -1048,7 +1083,7 @@ std::vector<Piece> difference(const std::vector<Piece>& base, const std::vector<
         }
       }
       REARM_DEMAND(at != kNone, "topology: an isolated obstacle lies in no piece");
-      pieces[at].holes.push_back(double_loop(obstacles[i].outer, true, settle));
+      pieces[at].holes.push_back(double_loop(obstacles[i].outer, true));
     }
     out.insert(out.end(), std::make_move_iterator(pieces.begin()),
                std::make_move_iterator(pieces.end()));
@@ -1057,7 +1092,7 @@ std::vector<Piece> difference(const std::vector<Piece>& base, const std::vector<
   for (std::size_t i = 0; i < n; ++i) {
     if (home[i] == kNone) continue;
     for (const Polygon& h : obstacles[i].holes) {
-      out.push_back(Piece{double_loop(h, false, settle), {}});
+      out.push_back(Piece{double_loop(h, false), {}});
     }
   }
   return out;
@@ -1075,7 +1110,7 @@ ExactFreespace::ExactFreespace(const RegionSet& bound, const RegionSet& fixed) {
   auto impl = std::make_unique<Impl>();
   std::vector<Piece> base;
   if (bound.size() == 1 && bound.front().holes.empty()) {
-    base.push_back(Piece{double_loop(bound.front().outer, false, true), {}});
+    base.push_back(Piece{double_loop(bound.front().outer, false), {}});
   } else {
     // Overlapping regions united, and the loops normalized to CGAL's disjoint cycles.
     std::vector<CPolygonWithHoles> parts;
@@ -1128,18 +1163,13 @@ void add_clusters(const std::vector<CPolygonWithHoles>& result,
 }
 
 // The region's loops clipped to window w: its material (`material`) and the holes' parts inside
-// it (`removed`); `dead` when the window lies in a hole. The loops' exact forms are made when
-// first needed.
-Outcome clip_region_to_window(const Region& region, const std::vector<LoopPtr>& loops,
-                              std::vector<LoopPtr>& exact_loops, const std::vector<Window>& windows,
+// it (`removed`); `dead` when the window lies in a hole.
+Outcome clip_region_to_window(const std::vector<LoopPtr>& loops, const std::vector<Window>& windows,
                               std::size_t w, std::vector<CPolygon>& material,
                               std::vector<CPolygon>& removed, bool& dead) {
   for (std::size_t k = 0; k < loops.size() && !dead; ++k) {
     if (!meet(loops[k]->box, windows[w].box())) continue;
-    if (!exact_loops[k]) {
-      exact_loops[k] = double_loop(k == 0 ? region.outer : region.holes[k - 1], k != 0, true);
-    }
-    const Loop& l = *exact_loops[k];
+    const Loop& l = *loops[k];
     if (!general_position(l, windows[w])) return Outcome::kDegenerate;
     Cut cut;
     if (!cut_loop(l, k, windows, {w}, cut)) return Outcome::kFallback;
@@ -1150,8 +1180,8 @@ Outcome clip_region_to_window(const Region& region, const std::vector<LoopPtr>& 
       if (!parts) return Outcome::kFallback;
       auto& to = k == 0 ? material : removed;
       to.insert(to.end(), parts->begin(), parts->end());
-    } else if (inside_window(l.exact.vertex(0), windows[w])) {
-      CPolygon p = l.exact;
+    } else if (inside_window(l.exact().vertex(0), windows[w])) {
+      CPolygon p = l.exact();
       if (k != 0) p.reverse_orientation();
       (k == 0 ? material : removed).push_back(std::move(p));
     } else if (side_of(l, windows[w].corner(0)) == CGAL::ON_BOUNDED_SIDE) {
@@ -1191,9 +1221,9 @@ std::vector<CPolygonWithHoles> clipped_union(const std::vector<CPolygon>& parts,
 // Windowed: (∪ group) ∩ region = (∪ group) ∩ (region ∩ W), the region clipped to each window
 // (freespace.h); the groups' unions are disjoint, so are their clusters. False when every try
 // of windows was degenerate or one met what the splice does not handle.
-bool windowed_union(const std::vector<Polygon>& polygons, const Region& region,
-                    const std::vector<LoopPtr>& loops, const std::vector<Box>& boxes,
-                    const std::vector<std::size_t>& touching, Clusters& out) {
+bool windowed_union(const std::vector<Polygon>& polygons, const std::vector<LoopPtr>& loops,
+                    const std::vector<Box>& boxes, const std::vector<std::size_t>& touching,
+                    Clusters& out) {
   const std::vector<std::vector<std::size_t>> groups = box_groups(boxes, touching);
   std::vector<Box> group_box;
   for (const auto& g : groups) {
@@ -1201,7 +1231,6 @@ bool windowed_union(const std::vector<Polygon>& polygons, const Region& region,
     for (std::size_t i : g) b += boxes[i];
     group_box.push_back(b);
   }
-  std::vector<LoopPtr> exact_loops(loops.size());  // CGAL polygons, made when first needed
   for (int t = 0; t < kWindowTries; ++t) {
     std::vector<std::vector<std::size_t>> members;
     const std::vector<Window> windows = windows_for(group_box, t, members);
@@ -1210,7 +1239,7 @@ bool windowed_union(const std::vector<Polygon>& polygons, const Region& region,
     for (std::size_t w = 0; w < windows.size() && o == Outcome::kDone; ++w) {
       std::vector<CPolygon> material, removed;
       bool dead = false;
-      o = clip_region_to_window(region, loops, exact_loops, windows, w, material, removed, dead);
+      o = clip_region_to_window(loops, windows, w, material, removed, dead);
       if (o != Outcome::kDone || dead || material.empty()) continue;
       std::vector<std::size_t> from;
       std::vector<CPolygon> parts;
@@ -1237,10 +1266,10 @@ Clusters clip_union(const std::vector<Polygon>& polygons, const Region& region) 
   std::vector<Box> boxes;
   boxes.reserve(n);
   for (const Polygon& p : polygons) boxes.push_back(box_of(p));
-  std::vector<LoopPtr> loops{double_loop(region.outer, false, false)};
+  std::vector<LoopPtr> loops{double_loop(region.outer, false)};
   std::vector<Box> walls = loops.front()->edges;
   for (const Polygon& h : region.holes) {
-    loops.push_back(double_loop(h, true, false));
+    loops.push_back(double_loop(h, true));
     walls.insert(walls.end(), loops.back()->edges.begin(), loops.back()->edges.end());
   }
   const std::vector<char> iso = isolated(boxes, walls);
@@ -1260,7 +1289,7 @@ Clusters clip_union(const std::vector<Polygon>& polygons, const Region& region) 
     }
   }
   if (touching.empty()) return out;
-  if (windowed_union(polygons, region, loops, boxes, touching, out)) return out;
+  if (windowed_union(polygons, loops, boxes, touching, out)) return out;
 
   // Plain: one overlay with the region's outer boundary and the holes the polygons reach.
   Region kept{region.outer, {}};

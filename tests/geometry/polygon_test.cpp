@@ -215,6 +215,18 @@ bool simple(const Polygon& p) {
   }
   return true;
 }
+// Strictly inside a simple polygon, q on no edge: the crossings of the ray from q towards +x
+// (edges with one end at or below q's height and the other above, q left of the edge).
+bool inside(const Polygon& p, const Point& q) {
+  bool in = false;
+  for (std::size_t i = 0, n = p.size(); i < n; ++i) {
+    Point a = p.vertices[i], b = p.vertices[(i + 1) % n];
+    if ((a.y() <= q.y()) == (b.y() <= q.y())) continue;
+    if (a.y() > b.y()) std::swap(a, b);
+    in ^= orient(a, b, q) > 0;
+  }
+  return in;
+}
 }  // namespace exact_int
 
 TEST(PolygonTest, ValidatedSimplicityMatchesTheDefinitionOnIntegerVertices) {
@@ -256,6 +268,37 @@ TEST(PolygonTest, ValidatedSimplicityMatchesTheDefinitionOnIntegerVertices) {
   }
   EXPECT_GT(simple, 500);
   EXPECT_GT(not_simple, 500);
+}
+
+TEST(PolygonTest, SideOfMatchesTheDefinitionOnIntegerVertices) {
+  Rng rng(12);
+  int counts[3] = {0, 0, 0};  // outside, boundary, inside
+  for (int trial = 0; trial < 600; ++trial) {
+    Polygon p;
+    const int n = 4 + static_cast<int>(rng.uniform(0, 9));
+    for (int i = 0; i < n; ++i)
+      p.vertices.emplace_back(std::floor(rng.uniform(0, 7)), std::floor(rng.uniform(0, 7)));
+    if (!checked_polygon(p).ok() || !exact_int::simple(p)) continue;
+    for (int reversed = 0; reversed < 2; ++reversed) {
+      if (reversed) std::reverse(p.vertices.begin(), p.vertices.end());
+      for (double x = -1; x <= 7; x += 0.5) {
+        for (double y = -1; y <= 7; y += 0.5) {
+          const Point q(x, y);
+          // Half-integer points: integers for the oracle after doubling every coordinate.
+          Polygon p2 = p;
+          for (Point& v : p2.vertices) v *= 2;
+          bool edge = false;
+          for (std::size_t i = 0; i < p2.size(); ++i)
+            edge |= exact_int::on_segment(p2.vertices[i], p2.vertices[(i + 1) % p2.size()], 2 * q);
+          const int want = edge ? 0 : exact_int::inside(p2, 2 * q) ? 1 : -1;
+          ASSERT_EQ(side_of(p, q), want) << "trial " << trial << " at " << x << ", " << y;
+          ++counts[want + 1];
+        }
+      }
+    }
+  }
+  for (int c : counts) EXPECT_GT(c, 1000);
+  EXPECT_THROW(side_of(unit_square(), Point(std::nan(""), 0)), Error);
 }
 
 TEST(PolygonTest, ValidatedRejectsZeroArea) {
