@@ -7,6 +7,8 @@
 #include <CGAL/Polygon_with_holes_2.h>
 
 #include <algorithm>
+#include <optional>
+#include <vector>
 
 #include "geometry/polygon.h"
 
@@ -60,5 +62,13 @@ inline Region from_cgal(const CPolygonWithHoles& p) {
   for (auto it = p.holes_begin(); it != p.holes_end(); ++it) out.holes.push_back(from_cgal(*it));
   return out;
 }
+
+// material − ∪cutters, exact, for one counter-clockwise polygon and cutters without holes
+// (outer boundaries counter-clockwise) whose boundaries meet only in proper crossings of two
+// edges (crossing_difference.cpp): outer boundaries counter-clockwise, holes clockwise, as
+// CGAL's Booleans return them. Nullopt for any other input (a vertex on another boundary,
+// collinear edges, three edges through a point): the caller runs CGAL's overlay instead.
+std::optional<std::vector<CPolygonWithHoles>> crossing_difference(
+    const CPolygon& material, const std::vector<CPolygonWithHoles>& cutters);
 
 }  // namespace rearm::geometry::internal
