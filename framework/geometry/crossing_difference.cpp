@@ -15,8 +15,11 @@
 #include <CGAL/Boolean_set_operations_2.h>
 #include <CGAL/Polygon_2_algorithms.h>
 #include <CGAL/intersections.h>
+#include <gmpxx.h>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <limits>
 #include <optional>
 #include <vector>
@@ -71,6 +74,86 @@ Cycle make_cycle(std::vector<CPoint> v) {
 
 bool meet(const Box& a, const Box& b) { return CGAL::do_overlap(a, b); }
 
+// The orientation of a simple cycle, from the sign of its area in interval arithmetic when that
+// decides (it does unless the area is nearly zero); else CGAL's exact test, whose leftmost-vertex
+// search compares coordinates that are often equal (window sides) and so exact.
+CGAL::Orientation orientation_of(const CPolygon& c) {
+  {
+    CGAL::Protect_FPU_rounding<true> upward;
+    CGAL::Interval_nt<false> twice_area = 0;
+    for (std::size_t i = 0, n = c.size(); i < n; ++i) {
+      const auto& p = c.vertex(i).approx();
+      const auto& q = c.vertex((i + 1) % n).approx();
+      twice_area += p.x() * q.y() - q.x() * p.y();
+    }
+    if (twice_area.inf() > 0) return CGAL::COUNTERCLOCKWISE;
+    if (twice_area.sup() < 0) return CGAL::CLOCKWISE;
+  }
+  return c.orientation();
+}
+
+// Does the exact point hold a pair of doubles (an input vertex: its intervals are points)?
+bool is_double(const CPoint& p) {
+  const auto& a = p.approx();
+  return a.x().inf() == a.x().sup() && a.y().inf() == a.y().sup();
+}
+
+// The crossing point of segments pq and rs (a proper crossing) whose ends are doubles,
+// c = (p, q, r, s) coordinate by coordinate: X = p + t (q − p), t = ((r − p) × (s − r)) /
+// ((q − p) × (s − r)), computed in integers (every coordinate an integer multiple of 2^lo, lo
+// the smallest binary exponent among them) and made an exact point directly, its
+// approximation the tight interval of its value: what the lazy construction evaluates to when
+// settled, without its node and the rationals' normalization at every step.
+CPoint crossing_of_doubles(const std::array<double, 8>& c) {
+  constexpr int kMantissa = std::numeric_limits<double>::digits;
+  int lo = std::numeric_limits<int>::max();
+  for (double v : c) {
+    int e = 0;
+    if (v != 0) lo = std::min(lo, (std::frexp(v, &e), e - kMantissa));
+  }
+  std::array<mpz_class, 8> z;
+  for (std::size_t i = 0; i < c.size(); ++i) {
+    if (c[i] == 0) continue;
+    int e = 0;
+    const double m = std::frexp(c[i], &e);
+    z[i] = mpz_class(std::ldexp(m, kMantissa));  // an integer below 2^53
+    z[i] <<= static_cast<mp_bitcnt_t>(e - kMantissa - lo);
+  }
+  const mpz_class dx = z[2] - z[0], dy = z[3] - z[1], ex = z[6] - z[4], ey = z[7] - z[5];
+  const mpz_class den = dx * ey - dy * ex;
+  const mpz_class num = (z[4] - z[0]) * ey - (z[5] - z[1]) * ex;
+  auto coordinate = [&](const mpz_class& start, const mpz_class& d) {
+    mpq_class q(start * den + num * d, den);
+    q.canonicalize();
+    if (lo < 0) {
+      mpq_div_2exp(q.get_mpq_t(), q.get_mpq_t(), static_cast<mp_bitcnt_t>(-lo));
+    } else {
+      mpq_mul_2exp(q.get_mpq_t(), q.get_mpq_t(), static_cast<mp_bitcnt_t>(lo));
+    }
+    return Kernel::Exact_kernel::FT(q.get_mpq_t());
+  };
+  return CPoint(
+      CPoint::Rep(Kernel::Exact_kernel::Point_2(coordinate(z[0], dx), coordinate(z[1], dy))));
+}
+
+// The crossing point of the properly crossing segments pq and rs, exact.
+std::optional<CPoint> crossing_point(const CPoint& p, const CPoint& q, const CPoint& r,
+                                     const CPoint& s) {
+  if (is_double(p) && is_double(q) && is_double(r) && is_double(s)) {
+    std::array<double, 8> c;
+    std::size_t k = 0;
+    for (const CPoint* v : {&p, &q, &r, &s}) {
+      c[k++] = v->approx().x().inf();
+      c[k++] = v->approx().y().inf();
+    }
+    return crossing_of_doubles(c);
+  }
+  const auto x = CGAL::intersection(Segment(p, q), Segment(r, s));
+  const CPoint* point = x ? boost::get<CPoint>(&*x) : nullptr;
+  if (point == nullptr) return std::nullopt;
+  return *point;
+}
+
 // The proper crossings of two cycles' edges; false at any contact that is not one.
 bool cross(const std::vector<Cycle>& cs, std::size_t i, std::size_t j, std::vector<Crossing>& out) {
   const Cycle& a = cs[i];
@@ -91,10 +174,9 @@ bool cross(const std::vector<Cycle>& cs, std::size_t i, std::size_t j, std::vect
       const CGAL::Orientation o4 = CGAL::orientation(r, s, q);
       if (o3 == CGAL::COLLINEAR || o4 == CGAL::COLLINEAR) return false;
       if (o3 == o4) continue;
-      const auto x = CGAL::intersection(Segment(p, q), Segment(r, s));
-      const CPoint* point = x ? boost::get<CPoint>(&*x) : nullptr;
-      if (point == nullptr) return false;
-      out.push_back(Crossing{*point, {i, j}, {e, f}});
+      const std::optional<CPoint> x = crossing_point(p, q, r, s);
+      if (!x) return false;
+      out.push_back(Crossing{*x, {i, j}, {e, f}});
     }
   }
   return true;
@@ -121,12 +203,24 @@ bool order_on_edges(std::size_t c, const Cycle& cycle, const std::vector<Crossin
   bool distinct = true;
   for (std::size_t e = 0; e < on_edge.size(); ++e) {
     if (on_edge[e].size() < 2) continue;
-    const bool up =
-        CGAL::compare_xy(cycle.v[e], cycle.v[(e + 1) % cycle.v.size()]) == CGAL::SMALLER;
-    std::sort(on_edge[e].begin(), on_edge[e].end(), [&](std::size_t a, std::size_t b) {
-      const CGAL::Comparison_result r = CGAL::compare_xy(xs[a].p, xs[b].p);
+    // Points of one edge are ordered by either coordinate that differs between its ends; the
+    // one that differs more leaves the interval filters room (a window side has one coordinate
+    // equal at all its crossings, which only the exact numbers could compare).
+    const CPoint& a = cycle.v[e];
+    const CPoint& b = cycle.v[(e + 1) % cycle.v.size()];
+    const auto& ia = a.approx();
+    const auto& ib = b.approx();
+    bool by_x = std::abs(ib.x().inf() - ia.x().inf()) >= std::abs(ib.y().inf() - ia.y().inf());
+    CGAL::Comparison_result dir = by_x ? CGAL::compare_x(a, b) : CGAL::compare_y(a, b);
+    if (dir == CGAL::EQUAL) {
+      by_x = !by_x;
+      dir = by_x ? CGAL::compare_x(a, b) : CGAL::compare_y(a, b);
+    }
+    std::sort(on_edge[e].begin(), on_edge[e].end(), [&](std::size_t i, std::size_t j) {
+      const CGAL::Comparison_result r =
+          by_x ? CGAL::compare_x(xs[i].p, xs[j].p) : CGAL::compare_y(xs[i].p, xs[j].p);
       if (r == CGAL::EQUAL) distinct = false;
-      return up ? r == CGAL::SMALLER : r == CGAL::LARGER;
+      return r == dir;
     });
   }
   return distinct;
@@ -206,7 +300,7 @@ std::optional<std::vector<CPolygonWithHoles>> assemble(std::vector<CPolygon> cyc
   std::vector<CPolygon> holes;
   for (CPolygon& c : cycles) {
     if (c.size() < 3) return std::nullopt;
-    if (c.orientation() == CGAL::COUNTERCLOCKWISE) {
+    if (orientation_of(c) == CGAL::COUNTERCLOCKWISE) {
       out.emplace_back(std::move(c));
     } else {
       holes.push_back(std::move(c));
@@ -229,13 +323,15 @@ std::optional<std::vector<CPolygonWithHoles>> assemble(std::vector<CPolygon> cyc
 
 std::optional<std::vector<CPolygonWithHoles>> crossing_difference(
     const CPolygon& material, const std::vector<CPolygonWithHoles>& cutters) {
-  if (material.size() < 3 || material.orientation() != CGAL::COUNTERCLOCKWISE) return std::nullopt;
+  if (material.size() < 3 || orientation_of(material) != CGAL::COUNTERCLOCKWISE) {
+    return std::nullopt;
+  }
   std::vector<Cycle> cs;
   cs.reserve(cutters.size() + 1);
   cs.push_back(make_cycle(std::vector<CPoint>(material.vertices_begin(), material.vertices_end())));
   for (const CPolygonWithHoles& c : cutters) {
     if (c.has_holes() || c.outer_boundary().size() < 3 ||
-        c.outer_boundary().orientation() != CGAL::COUNTERCLOCKWISE) {
+        orientation_of(c.outer_boundary()) != CGAL::COUNTERCLOCKWISE) {
       return std::nullopt;
     }
     std::vector<CPoint> v(c.outer_boundary().vertices_begin(), c.outer_boundary().vertices_end());

@@ -41,6 +41,15 @@ CPolygon rotated_rect(const Point& c, double w, double h, double angle) {
   return to_cgal(p);
 }
 
+// A polygon of doubles scaled by k (the crossing points are built in integers scaled by the
+// inputs' smallest binary exponent: small and large coordinates too).
+CPolygon scaled(const CPolygon& p, double k) {
+  CPolygon out;
+  for (const CPoint& v : p.vertices())
+    out.push_back(CPoint(CGAL::to_double(v.x()) * k, CGAL::to_double(v.y()) * k));
+  return out;
+}
+
 // CGAL's difference: the material minus the union of the cutters.
 std::vector<CPolygonWithHoles> reference(const CPolygon& material,
                                          const std::vector<CPolygonWithHoles>& cutters) {
@@ -93,6 +102,8 @@ TEST(CrossingDifference, MatchesCgalOnRandomStarsAndRectangles) {
       material = rotated_rect(Point(0, 0), rng.uniform(2, 6), rng.uniform(2, 6),
                               rng.uniform(0, std::numbers::pi));
     }
+    const double scale = trial % 4 == 1 ? 1e-5 : trial % 4 == 3 ? 3e4 : 1;
+    material = scaled(material, scale);
     if (trial % 5 == 0) {  // constructed vertices: midpoints (not doubles) replace every other
       CPolygon m;
       for (std::size_t i = 0; i < material.size(); ++i) {
@@ -105,10 +116,11 @@ TEST(CrossingDifference, MatchesCgalOnRandomStarsAndRectangles) {
     const int k = 1 + static_cast<int>(rng.index(8));
     for (int c = 0; c < k; ++c) {
       const Point at(rng.uniform(-3.5, 3.5), rng.uniform(-3.5, 3.5));
-      cutters.emplace_back(rng.bernoulli(0.5)
-                               ? star(rng, at, 0.2, 1.5)
-                               : rotated_rect(at, rng.uniform(0.2, 3), rng.uniform(0.2, 3),
-                                              rng.uniform(0, std::numbers::pi)));
+      const CPolygon shape = rng.bernoulli(0.5)
+                                 ? star(rng, at, 0.2, 1.5)
+                                 : rotated_rect(at, rng.uniform(0.2, 3), rng.uniform(0.2, 3),
+                                                rng.uniform(0, std::numbers::pi));
+      cutters.emplace_back(scaled(shape, scale));
     }
     if (check(material, cutters)) {
       ++traced;
