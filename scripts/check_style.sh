@@ -10,7 +10,9 @@ cd "$(dirname "$0")/.."
 max_lines=100
 status=0
 if ! git ls-files '*.cpp' '*.h' | xargs clang-format --dry-run --Werror 2>/tmp/check_style.$$; then
-  grep "warning:" /tmp/check_style.$$ | cut -d: -f1,2 | sort -u | sed 's/$/: not clang-formatted/' >&2
+  # clang-format 14 reports each offence as "error:" under --Werror ("warning:" without it).
+  { grep -E "(warning|error):" /tmp/check_style.$$ || true; } | cut -d: -f1,2 | sort -u |
+    sed 's/$/: not clang-formatted/' >&2
   status=1
 fi
 rm -f /tmp/check_style.$$

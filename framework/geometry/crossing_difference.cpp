@@ -108,8 +108,10 @@ CPoint crossing_of_doubles(const std::array<double, 8>& c) {
   constexpr int kMantissa = std::numeric_limits<double>::digits;
   int lo = std::numeric_limits<int>::max();
   for (double v : c) {
+    if (v == 0) continue;
     int e = 0;
-    if (v != 0) lo = std::min(lo, (std::frexp(v, &e), e - kMantissa));
+    std::frexp(v, &e);
+    lo = std::min(lo, e - kMantissa);
   }
   std::array<mpz_class, 8> z;
   for (std::size_t i = 0; i < c.size(); ++i) {
@@ -154,7 +156,8 @@ std::optional<CPoint> crossing_point(const CPoint& p, const CPoint& q, const CPo
   return *point;
 }
 
-// The proper crossings of two cycles' edges; false at any contact that is not one.
+// The proper crossings of two cycles' edges; false at any contact that is not one (and,
+// conservatively, whenever an end of one edge lies on the other's line while their boxes meet).
 bool cross(const std::vector<Cycle>& cs, std::size_t i, std::size_t j, std::vector<Crossing>& out) {
   const Cycle& a = cs[i];
   const Cycle& b = cs[j];

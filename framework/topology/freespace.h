@@ -27,15 +27,15 @@
 //    exact overlay (one part and obstacles without holes whose boundaries meet only in proper
 //    crossings: traced along the crossings by geometry::internal::crossing_difference, under a
 //    quarter of the time of CGAL's arrangement per window at 10 objects × 20 obstacles while
-//    carrying; otherwise CGAL's); the overlay's boundary chains between crossing points replace the loops'
-//    chains inside the window, spliced at the crossing points (which then drop out: each lies
-//    inside an edge of the piece that the result follows straight through); loops the windows
-//    do not reach stay as they are. The resulting cycles are sorted into pieces by exact point
-//    location. A window is in general position when no loop vertex lies on its boundary and no
-//    loop edge passes through a corner (exact tests); otherwise a larger window is tried (four
-//    in all). Loops through one point twice, and anything else the splice does not expect,
-//    send the piece to the plain overlay (its outer cycle and the holes the obstacles' boxes
-//    reach, minus the obstacles; the other holes then located in the result).
+//    carrying; otherwise CGAL's); the overlay's boundary chains between crossing points
+//    replace the loops' chains inside the window, spliced at the crossing points (which then
+//    drop out: each lies inside an edge of the piece that the result follows straight
+//    through); loops the windows do not reach stay as they are. The resulting cycles are
+//    sorted into pieces by exact point location. A window is in general position when no loop
+//    vertex lies on its boundary and no loop edge passes through a corner (exact tests); otherwise
+//    a larger window is tried (four in all). Loops through one point twice, and anything else the
+//    splice does not expect, send the piece to the plain overlay (its outer cycle and the holes the
+//    obstacles' boxes reach, minus the obstacles; the other holes then located in the result).
 //  Boxes of exact (non-double) points are CGAL's interval enclosures and every box test is
 //  conservative: taking a shape as interacting when it is not only costs an overlay.
 //
