@@ -21,6 +21,13 @@ using CPolygon = CGAL::Polygon_2<Kernel>;
 using CPolygonWithHoles = CGAL::Polygon_with_holes_2<Kernel>;
 
 inline CPoint to_cgal(const Point& p) { return CPoint(p.x(), p.y()); }
+
+// Does the exact point hold a pair of doubles (an input vertex: its intervals are points, so
+// it is exact already and its doubles are those intervals)?
+inline bool is_double(const CPoint& p) {
+  const auto& a = p.approx();
+  return a.x().inf() == a.x().sup() && a.y().inf() == a.y().sup();
+}
 inline Point from_cgal(const CPoint& p) {
   return Point(CGAL::to_double(p.x()), CGAL::to_double(p.y()));
 }

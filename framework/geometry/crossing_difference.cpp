@@ -92,12 +92,6 @@ CGAL::Orientation orientation_of(const CPolygon& c) {
   return c.orientation();
 }
 
-// Does the exact point hold a pair of doubles (an input vertex: its intervals are points)?
-bool is_double(const CPoint& p) {
-  const auto& a = p.approx();
-  return a.x().inf() == a.x().sup() && a.y().inf() == a.y().sup();
-}
-
 // The crossing point of segments pq and rs (a proper crossing) whose ends are doubles,
 // c = (p, q, r, s) coordinate by coordinate: X = p + t (q − p), t = ((r − p) × (s − r)) /
 // ((q − p) × (s − r)), computed in integers (every coordinate an integer multiple of 2^lo, lo

@@ -140,8 +140,7 @@ LoopPtr exact_loop(CPolygon p, bool settle) {
   if (settle) {
     // A point whose intervals are single doubles (an input vertex) is exact already.
     for (auto it = p.vertices_begin(); it != p.vertices_end(); ++it) {
-      const auto& a = it->approx();
-      if (a.x().inf() != a.x().sup() || a.y().inf() != a.y().sup()) (void)CGAL::exact(*it);
+      if (!geometry::internal::is_double(*it)) (void)CGAL::exact(*it);
     }
   }
   const std::size_t n = p.size();
@@ -190,17 +189,11 @@ Piece exact_piece(const CPolygonWithHoles& p, bool settle) {
   return out;
 }
 
-// Is the exact point a pair of doubles (an input vertex)?
-bool is_double(const CPoint& q) {
-  const auto& a = q.approx();
-  return a.x().inf() == a.x().sup() && a.y().inf() == a.y().sup();
-}
-
 // Where q lies relative to the cycle (exact), after a box filter; a cycle and a point given in
 // doubles by exact predicates on the doubles, without building lazy exact points.
 CGAL::Bounded_side side_of(const Loop& l, const CPoint& q) {
   if (!meet(l.box, q.bbox())) return CGAL::ON_UNBOUNDED_SIDE;
-  if (l.from_doubles && is_double(q)) {
+  if (l.from_doubles && geometry::internal::is_double(q)) {
     const int side =
         geometry::side_of(l.cycle_of_doubles(), Point(q.approx().x().inf(), q.approx().y().inf()));
     return side > 0    ? CGAL::ON_BOUNDED_SIDE
