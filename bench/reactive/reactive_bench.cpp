@@ -237,6 +237,13 @@ void BM_DiffeoEvaluate(benchmark::State& state) {
                [](const Setup& s, std::size_t i) { return s.diffeo->evaluate(s.points[i]); });
 }
 
+// h and Dh only (the unicycle guard's candidate steps, the pair's and holonomic law's points).
+void BM_DiffeoEvaluateJacobian(benchmark::State& state) {
+  cycle_points(state, [](const Setup& s, std::size_t i) {
+    return s.diffeo->evaluate(s.points[i], rearm::reactive::DiffeoOrder::kJacobian);
+  });
+}
+
 void BM_HolonomicCommand(benchmark::State& state) {
   cycle_points(state,
                [](const Setup& s, std::size_t i) { return s.controller->holonomic(s.points[i]); });
@@ -277,6 +284,7 @@ void Sweep(benchmark::internal::Benchmark* b) {
 BENCHMARK(BM_MappedSpace)->Apply(Sweep)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_DiffeoConstruction)->Apply(Sweep)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_DiffeoEvaluate)->Apply(Sweep)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_DiffeoEvaluateJacobian)->Apply(Sweep)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_HolonomicCommand)->Apply(Sweep)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_UnicycleCommand)->Apply(Sweep)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_ReactiveRebuild)->Apply(Sweep)->Unit(benchmark::kMillisecond);

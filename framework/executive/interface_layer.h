@@ -11,7 +11,6 @@
 #include "executive/region.h"
 #include "geometry/polygon.h"
 #include "perception/semantic_map.h"
-#include "topology/topology_check.h"
 
 namespace rearm::executive {
 

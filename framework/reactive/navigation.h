@@ -54,6 +54,7 @@ struct NavScratch {
 };
 
 // Fully actuated law: ẋ = Dh⁻¹ · k (Π_LF(y)(y*) − y), y = at_x.h, with ‖ẋ‖ saturated to v_max.
+// Reads h and Dh only (an evaluation at DiffeoOrder::kJacobian suffices; so for pair_command).
 // Throws rearm::Error on non-finite inputs, a singular Dh, or y outside the model freespace.
 Point fully_actuated_velocity(const ModelSpace& m, const DiffeoEval& at_x, const Point& y_goal,
                               const NavParams& p);

@@ -113,7 +113,8 @@ bool ReactiveController::retarget(const Point& goal) {
 
 Point ReactiveController::holonomic(const Point& x, double dt) {
   if (!diffeo_) throw Error("reactive controller: command requested before rebuild()");
-  const DiffeoEval e = diffeo_->evaluate(x);
+  // The fully actuated law reads h and Dh only (§4): D²h is not computed.
+  const DiffeoEval e = diffeo_->evaluate(x, DiffeoOrder::kJacobian);
   sample_ = LawSample{x, e.h, e.J.determinant()};
   Point u = fully_actuated_velocity(diffeo_->model(), e, model_goal_, nav_, scratch_);
   for (int k = 0; k < kSafetyHalvings; ++k, u /= 2) {
@@ -152,7 +153,8 @@ Twist ReactiveController::unicycle(const Pose& pose, double dt) {
 Twist ReactiveController::pair(const Pose& pose, double rho_i, double dt) {
   if (!diffeo_) throw Error("reactive controller: command requested before rebuild()");
   const Point xc = pair_center(pose.x, pose.psi, rho_i);
-  const DiffeoEval e = diffeo_->evaluate(xc);
+  // The pair's law is the fully actuated one pulled through T(ψ) (§4): h and Dh only.
+  const DiffeoEval e = diffeo_->evaluate(xc, DiffeoOrder::kJacobian);
   sample_ = LawSample{xc, e.h, e.J.determinant()};
   Twist u = pair_command(diffeo_->model(), e, pose.psi, rho_i, model_goal_, nav_, scratch_);
   for (int k = 0; k < kSafetyHalvings; ++k, u = Twist{u.v / 2, u.omega / 2}) {

@@ -431,7 +431,6 @@ TopologyResult check_topology(const TopologyInput& in) {
 TopologyResult check_topology(const TopologyInput& raw, TopologyCache& cache) {
   check_point(raw.x, "robot position x");
   check_point(raw.target, "target x*");
-  if (raw.bound.empty()) throw Error("topology: the bound (initial freespace) is empty");
   if (!raw.movable_ids.empty() && raw.movable_ids.size() != raw.movable.size()) {
     throw Error("topology: " + std::to_string(raw.movable_ids.size()) + " movable ids for " +
                 std::to_string(raw.movable.size()) + " movable objects");
