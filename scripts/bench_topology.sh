@@ -229,7 +229,7 @@ lines += ["", "How (topology/freespace.h): bound − ∪fixed is computed once p
           "them), and a cached call is bit for bit the uncached one "
           "(tests/topology/topology_cache_test). Same-run ratios against earlier revisions are "
           "in speed/trials.md (scripts/bench_speed.sh): this file's absolute times drift with "
-          "the machine (up to 1.3x between runs). valgrind/callgrind cannot run CGAL's interval "
+          "the machine (1.5x between two runs in one session). valgrind/callgrind cannot run CGAL's interval "
           "arithmetic (it does not emulate the rounding-mode "
           "changes; the sweep crashes), so there are no instruction counts."]
 

@@ -28,6 +28,10 @@ inline bool is_double(const CPoint& p) {
   const auto& a = p.approx();
   return a.x().inf() == a.x().sup() && a.y().inf() == a.y().sup();
 }
+// The doubles of a point for which is_double holds (read from its intervals, no exact number).
+inline Point double_point(const CPoint& p) {
+  return Point(p.approx().x().inf(), p.approx().y().inf());
+}
 inline Point from_cgal(const CPoint& p) {
   return Point(CGAL::to_double(p.x()), CGAL::to_double(p.y()));
 }

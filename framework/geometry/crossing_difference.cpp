@@ -101,19 +101,18 @@ CGAL::Orientation orientation_of(const CPolygon& c) {
 CPoint crossing_of_doubles(const std::array<double, 8>& c) {
   constexpr int kMantissa = std::numeric_limits<double>::digits;
   int lo = std::numeric_limits<int>::max();
-  for (double v : c) {
-    if (v == 0) continue;
-    int e = 0;
-    std::frexp(v, &e);
-    lo = std::min(lo, e - kMantissa);
+  std::array<double, 8> mantissa{};
+  std::array<int, 8> exponent{};
+  for (std::size_t i = 0; i < c.size(); ++i) {
+    if (c[i] == 0) continue;
+    mantissa[i] = std::frexp(c[i], &exponent[i]);
+    lo = std::min(lo, exponent[i] - kMantissa);
   }
   std::array<mpz_class, 8> z;
   for (std::size_t i = 0; i < c.size(); ++i) {
     if (c[i] == 0) continue;
-    int e = 0;
-    const double m = std::frexp(c[i], &e);
-    z[i] = mpz_class(std::ldexp(m, kMantissa));  // an integer below 2^53
-    z[i] <<= static_cast<mp_bitcnt_t>(e - kMantissa - lo);
+    z[i] = mpz_class(std::ldexp(mantissa[i], kMantissa));  // an integer below 2^53
+    z[i] <<= static_cast<mp_bitcnt_t>(exponent[i] - kMantissa - lo);
   }
   const mpz_class dx = z[2] - z[0], dy = z[3] - z[1], ex = z[6] - z[4], ey = z[7] - z[5];
   const mpz_class den = dx * ey - dy * ex;
@@ -139,8 +138,9 @@ std::optional<CPoint> crossing_point(const CPoint& p, const CPoint& q, const CPo
     std::array<double, 8> c;
     std::size_t k = 0;
     for (const CPoint* v : {&p, &q, &r, &s}) {
-      c[k++] = v->approx().x().inf();
-      c[k++] = v->approx().y().inf();
+      const Point d = double_point(*v);
+      c[k++] = d.x();
+      c[k++] = d.y();
     }
     return crossing_of_doubles(c);
   }

@@ -194,8 +194,7 @@ Piece exact_piece(const CPolygonWithHoles& p, bool settle) {
 CGAL::Bounded_side side_of(const Loop& l, const CPoint& q) {
   if (!meet(l.box, q.bbox())) return CGAL::ON_UNBOUNDED_SIDE;
   if (l.from_doubles && geometry::internal::is_double(q)) {
-    const int side =
-        geometry::side_of(l.cycle_of_doubles(), Point(q.approx().x().inf(), q.approx().y().inf()));
+    const int side = geometry::side_of(l.cycle_of_doubles(), geometry::internal::double_point(q));
     return side > 0    ? CGAL::ON_BOUNDED_SIDE
            : side == 0 ? CGAL::ON_BOUNDARY
                        : CGAL::ON_UNBOUNDED_SIDE;
