@@ -10,19 +10,19 @@ instances (the ablation draws its instances from the same seeds as the committed
 rows are matched by class, N, target density and instance seed).
 """
 import collections
-import csv
-import math
 import sys
 
+# sweep_data.py sits beside this file, which is sys.path[0] when it runs as a script.
+from sweep_data import Trial, first_seen, number, read_trials, recovery_columns, wilson
 
-def wilson(k, n, z=1.96):
-    if n == 0:
-        return (0.0, 0.0)
-    p = k / n
-    d = 1 + z * z / n
-    c = (p + z * z / (2 * n)) / d
-    h = z * math.sqrt(p * (1 - p) / n + z * z / (4 * n * n)) / d
-    return (max(0.0, c - h), min(1.0, c + h))
+# Headings of the counters whose column name, underscores read as spaces, would not say what
+# it counts; any other counter (a new one too) is headed by its column name with spaces.
+RECOVERY_LABELS = {"back_outs": "back-ups", "faces": "turns to the goal",
+                   "narrows": "narrow passages", "fragment_fixes": "ways beside unknown obstacles"}
+
+
+def label(column):
+    return RECOVERY_LABELS.get(column, column.replace("_", " "))
 
 
 def cell(k, n):
@@ -30,56 +30,78 @@ def cell(k, n):
     return f"{k}/{n} ({100 * k / n:.0f}%, {100 * lo:.0f}–{100 * hi:.0f})" if n else "–"
 
 
-def main():
-    rows = list(csv.DictReader(open(sys.argv[1])))
-    classes = sorted({r["class"] for r in rows})
-    methods = list(dict.fromkeys(r["method"] for r in rows))
+def instance_key(r):
+    return (r["class"], r["objects"], r["target_density"], r["instance_seed"])
+
+
+def count(tally, name, r):
+    """Adds row r's trial and success to method `name` in its class and in all classes."""
+    success = Trial(r).success
+    for c in (r["class"], "all"):
+        t = tally[(name, c)]
+        t[0] += success
+        t[1] += 1
+
+
+def tally_ablation(rows, columns):
+    """(methods, success tally, recovery counts, trials with a collision) of the ablation."""
+    methods = first_seen(r["method"] for r in rows)
     tally = collections.defaultdict(lambda: [0, 0])
-    rec = collections.defaultdict(lambda: collections.Counter())
+    rec = collections.defaultdict(collections.Counter)
     collisions = collections.Counter()
     for r in rows:
-        for c in (r["class"], "all"):
-            t = tally[(r["method"], c)]
-            t[0] += int(r["success"])
-            t[1] += 1
-        for k in ("guides", "back_outs", "singular_switches", "convex_fallbacks", "restores",
-                  "early_releases", "withdrawals", "release_points",
-                  "early_docks", "faces", "narrows", "fragment_fixes", "pocket_drops",
-                  "redrops"):
-            rec[r["method"]][k] += int(r.get(k) or 0)
-        collisions[r["method"]] += int(r["collisions"]) > 0
-    keys = {(r["class"], r["objects"], r["target_density"], r["instance_seed"]) for r in rows}
-    if len(sys.argv) > 2:
-        for r in csv.DictReader(open(sys.argv[2])):
-            if r["method"].startswith("rearm"):
-                continue
-            if (r["class"], r["objects"], r["target_density"], r["instance_seed"]) not in keys:
-                continue
-            name = r["method"] + " (committed sweep)"
-            if name not in methods:
-                methods.append(name)
-            for c in (r["class"], "all"):
-                t = tally[(name, c)]
-                t[0] += int(r["success"])
-                t[1] += 1
+        count(tally, r["method"], r)
+        counts = rec[r["method"]]  # a row per ablation method, counters or not
+        for k in columns:
+            counts[k] += int(number(r.get(k)) or 0)
+        collisions[r["method"]] += (number(r.get("collisions")) or 0) > 0
+    return methods, tally, rec, collisions
+
+
+def add_sweep(path, keys, methods, tally):
+    """The committed sweep's baselines on the ablation's instances, as methods of their own."""
+    _, rows = read_trials(path)
+    for r in rows:
+        # rearm and its variants are the ablation's own rows.
+        if r["method"].startswith("rearm") or instance_key(r) not in keys:
+            continue
+        name = r["method"] + " (committed sweep)"
+        if name not in methods:
+            methods.append(name)
+        count(tally, name, r)
+
+
+def print_success(classes, methods, tally):
     print("| method | " + " | ".join(classes) + " | all |")
     print("|---|" + "---|" * (len(classes) + 1))
     for m in methods:
         print(f"| {m} | " + " | ".join(cell(*tally[(m, c)]) for c in classes + ["all"]) + " |")
     print()
-    print("| method | trials with a collision | guides | back-ups | singular switches | "
-          "convex fallbacks | restores | early releases | withdrawals | release points | early docks | "
-          "turns to the goal | narrow passages | ways beside unknown obstacles | pocket drops | redrops |")
-    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+
+
+def print_recoveries(methods, rec, collisions, columns):
+    head = ["method", "trials with a collision"] + [label(k) for k in columns]
+    print("| " + " | ".join(head) + " |")
+    print("|" + "---|" * len(head))
     for m in methods:
         if m in rec:
-            r = rec[m]
-            print(f"| {m} | {collisions[m]} | {r['guides']} | {r['back_outs']} | "
-                  f"{r['singular_switches']} | {r['convex_fallbacks']} | {r['restores']} | "
-                  f"{r['early_releases']} | {r['withdrawals']} | {r['release_points']} | {r['early_docks']} | "
-                  f"{r['faces']} | {r['narrows']} | {r['fragment_fixes']} | {r['pocket_drops']} | "
-                  f"{r['redrops']} |")
+            row = [m, str(collisions[m])] + [str(rec[m][k]) for k in columns]
+            print("| " + " | ".join(row) + " |")
+
+
+def main(argv):
+    if len(argv) not in (2, 3) or argv[1] in ("-h", "--help"):
+        print(__doc__.strip())
+        return 0 if len(argv) == 2 else 2
+    header, rows = read_trials(argv[1])
+    columns = recovery_columns(header)
+    methods, tally, rec, collisions = tally_ablation(rows, columns)
+    if len(argv) > 2:
+        add_sweep(argv[2], {instance_key(r) for r in rows}, methods, tally)
+    print_success(sorted({r["class"] for r in rows}), methods, tally)
+    print_recoveries(methods, rec, collisions, columns)
+    return 0
 
 
 if __name__ == "__main__":
-    main()
+    sys.exit(main(sys.argv))

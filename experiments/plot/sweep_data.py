@@ -1,0 +1,287 @@
+"""The data of a `rearm sweep` folder: trials.csv read and grouped, and its statistics.
+
+Shared by sweep.py (report.md and the figures) and ablation_table.py. Only python3's standard
+library is used, so that the tables and the tests run without matplotlib.
+
+Method names are the CSV's own, in the order of their first row: nothing here knows the C++
+method list, so a new method (or an ablation variant) appears without a change here.
+"""
+import csv
+import math
+import os
+import sys
+from collections import defaultdict
+
+# The two-sided 95% standard normal quantile Phi^-1(0.975) = 1.95996398454005423552..., to 16
+# significant digits; every 95% interval of the scripts (sweep report, figures, ablation table)
+# uses it.
+Z95 = 1.959963984540054
+
+# The goal classes in the order of the paper's study; a class not listed still appears, after.
+KNOWN_CLASSES = ["random", "cyclic", "sealed"]
+
+# Columns the C++ writer places between `fix_mode_entries` and the recovery counters that are
+# not recoveries: `replans` counts the replan baseline's replanning (baselines/).
+NOT_RECOVERIES = {"replans"}
+
+
+# ----------------------------------------------------------------------------- reading
+
+
+def warn(msg):
+    prog = os.path.basename(sys.argv[0]) if sys.argv and sys.argv[0] else "sweep_data"
+    print("%s: warning: %s" % (prog, msg), file=sys.stderr)
+
+
+def number(text):
+    """A finite float, or None for an empty, non-numeric or non-finite field."""
+    if text is None:
+        return None
+    try:
+        x = float(text)
+    except ValueError:
+        return None
+    return x if math.isfinite(x) else None
+
+
+def read_trials(path):
+    """(header, rows as dicts) of trials.csv; a cut last line and damaged rows are dropped."""
+    with open(path, newline="", encoding="utf-8", errors="replace") as f:
+        text = f.read()
+    if text and not text.endswith("\n"):
+        cut = text.rfind("\n")
+        warn("%s: dropping a cut last line" % path)
+        text = text[: cut + 1] if cut >= 0 else ""
+    reader = csv.reader(text.splitlines(keepends=True))
+    header = next(reader, None)
+    if not header:
+        return [], []
+    rows = []
+    for line_no, fields in enumerate(reader, start=2):
+        if not fields:
+            continue
+        if len(fields) != len(header):
+            warn("%s: line %d has %d fields, the header %d: skipped"
+                 % (path, line_no, len(fields), len(header)))
+            continue
+        rows.append(dict(zip(header, fields)))
+    return header, rows
+
+
+def recovery_columns(header):
+    """The recovery-counter columns of a trials.csv header, in the header's order.
+
+    The C++ writer (framework/experiment, the trials CSV columns) writes `fix_mode_entries`,
+    `replans`, then the robust variant's recovery counters, then `collisions`: the counters are
+    the columns between `fix_mode_entries` and `collisions`, NOT_RECOVERIES left out. A header
+    without both bounds (an older CSV) has none.
+    """
+    try:
+        first = header.index("fix_mode_entries") + 1
+        end = header.index("collisions")
+    except ValueError:
+        return []
+    return [c for c in header[first:end] if c not in NOT_RECOVERIES]
+
+
+def sweep_name(dir_path, rows):
+    """The sweep's name: sweep.yaml's top-level `name:`, else the rows' sweep column."""
+    path = os.path.join(dir_path, "sweep.yaml")
+    try:
+        with open(path, encoding="utf-8", errors="replace") as f:
+            for line in f:
+                if line.startswith("name:"):
+                    value = line[len("name:"):].split(" #")[0].strip().strip("'\"")
+                    if value:
+                        return value
+    except OSError:
+        warn("%s: cannot read; naming the sweep from the CSV" % path)
+    names = sorted({r.get("sweep", "") for r in rows} - {""})
+    return ", ".join(names) if names else os.path.basename(os.path.abspath(dir_path))
+
+
+class Trial:
+    """The fields of one row that the report uses, parsed."""
+
+    def __init__(self, r):
+        self.method = r.get("method", "") or "?"
+        self.cls = r.get("class", "") or "?"
+        n = number(r.get("objects"))
+        self.n = int(n) if n is not None else None
+        self.density = number(r.get("target_density"))
+        self.achieved = number(r.get("achieved_density"))
+        self.status = r.get("status", "") or "?"
+        # The sweep's one success rule (completed, every goal reached, no collision) is the
+        # C++ writer's `success` column; nothing here recomputes it.
+        self.success = r.get("success", "").strip() == "1"
+        # The time of a trial: planning time for the offline baselines, compute time otherwise.
+        planning = number(r.get("planning_time_s"))
+        self.time = planning if planning is not None else number(r.get("compute_time_s"))
+        self.time_limit = number(r.get("time_limit_s"))
+        self.actions = number(r.get("actions"))
+        self.path = number(r.get("robot_path_m"))
+        self.reason = r.get("reason", "")
+        self.revision = r.get("revision", "")
+        self.host = r.get("host", "")
+        self.cpu = r.get("cpu_model", "")
+        # Settings that may vary in a sweep beyond class x N x density: pooled in the figures,
+        # kept apart in the table when they do vary.
+        self.variant = (r.get("unknown_fraction", ""), r.get("unknown_shapes", ""),
+                        r.get("workspace_rule", ""))
+
+
+# ----------------------------------------------------------------------------- statistics
+
+
+def wilson(k, n, z=Z95):
+    """Wilson score interval of k successes in n trials: (low, high); (nan, nan) for n = 0.
+
+    The bounds are the two p with |k/n - p| = z sqrt(p (1 - p) / n). For k = 0 the low one is
+    exactly 0 and for k = n the high one exactly 1, which the closed form misses by rounding.
+    """
+    if n == 0:
+        return float("nan"), float("nan")
+    p = k / n
+    denom = 1 + z * z / n
+    centre = (p + z * z / (2 * n)) / denom
+    half = z * math.sqrt(p * (1 - p) / n + z * z / (4 * n * n)) / denom
+    low = 0.0 if k == 0 else max(0.0, centre - half)
+    high = 1.0 if k == n else min(1.0, centre + half)
+    return low, high
+
+
+def quantile(sorted_xs, q):
+    """Linear-interpolation quantile (numpy's default) of a sorted, non-empty list."""
+    pos = q * (len(sorted_xs) - 1)
+    lo = math.floor(pos)
+    hi = min(lo + 1, len(sorted_xs) - 1)
+    return sorted_xs[lo] + (sorted_xs[hi] - sorted_xs[lo]) * (pos - lo)
+
+
+def summary(values):
+    """(median, q1, q3) of the non-missing values, or None when there are none."""
+    xs = sorted(v for v in values if v is not None)
+    if not xs:
+        return None
+    return quantile(xs, 0.5), quantile(xs, 0.25), quantile(xs, 0.75)
+
+
+class Cell:
+    """Successes and cost of a set of trials (one method in one cell, or any pooled set).
+
+    Medians of time, actions and path are over the successful trials, the achieved density's
+    over all of them.
+    """
+
+    def __init__(self, trials):
+        self.trials = trials
+        self.n = len(trials)
+        self.k = sum(t.success for t in trials)
+        self.rate = self.k / self.n if self.n else float("nan")
+        self.ci = wilson(self.k, self.n)
+        ok = [t for t in trials if t.success]
+        self.time = summary(t.time for t in ok)
+        self.time_all = summary(t.time for t in trials)
+        self.actions = summary(t.actions for t in ok)
+        self.path = summary(t.path for t in ok)
+        self.achieved = summary(t.achieved for t in trials)
+
+
+def nice_width(span):
+    for w in (0.005, 0.01, 0.02, 0.025, 0.05, 0.1, 0.2, 0.25, 0.5):
+        if span / w <= 8:
+            return w
+    return span / 8
+
+
+def density_bins(values):
+    """Bin edges over the achieved densities: round widths, at most about 8 bins."""
+    xs = [v for v in values if v is not None]
+    if not xs:
+        return []
+    lo, hi = min(xs), max(xs)
+    if hi - lo < 1e-9:
+        return [lo - 0.005, hi + 0.005]
+    w = nice_width(hi - lo)
+    start = math.floor(lo / w + 1e-9) * w
+    edges = [start]
+    while edges[-1] <= hi + 1e-12:
+        edges.append(round(edges[-1] + w, 10))
+    return edges
+
+
+def bin_index(x, edges):
+    for i in range(len(edges) - 1):
+        if x < edges[i + 1] or i == len(edges) - 2:
+            return i
+    return len(edges) - 2
+
+
+def density_cells(trials, edges):
+    """{bin index: Cell} of the trials with an achieved density, binned by edges."""
+    bins = defaultdict(list)
+    for x in trials:
+        if x.achieved is not None:
+            bins[bin_index(x.achieved, edges)].append(x)
+    return {b: Cell(v) for b, v in bins.items()}
+
+
+# ----------------------------------------------------------------------------- ordering
+
+
+def first_seen(values):
+    """The distinct values in the order of their first appearance."""
+    return list(dict.fromkeys(values))
+
+
+def ordered(values, known):
+    """The known names first in their order, then the others sorted."""
+    values = set(values)
+    return [v for v in known if v in values] + sorted(values - set(known))
+
+
+def sort_numbers(values):
+    return sorted({v for v in values if v is not None})
+
+
+# ----------------------------------------------------------------------------- the data set
+
+
+class Sweep:
+    """The trials of one sweep folder, its settings and its cells."""
+
+    def __init__(self, dir_path):
+        self.dir = dir_path
+        header, rows = read_trials(os.path.join(dir_path, "trials.csv"))
+        self.header = header
+        self.name = sweep_name(dir_path, rows)
+        self.trials = t = [Trial(r) for r in rows]
+        self.methods = first_seen(x.method for x in t)
+        self.classes = ordered((x.cls for x in t), KNOWN_CLASSES)
+        self.ns = sort_numbers(x.n for x in t)
+        self.densities = sort_numbers(x.density for x in t)
+        self.variants = sorted({x.variant for x in t})
+        self.revisions = sorted({x.revision for x in t} - {""})
+        self.hosts = sorted({x.host for x in t} - {""})
+        self.cpus = sorted({x.cpu for x in t} - {""})
+        self.time_limits = sort_numbers(x.time_limit for x in t)
+        # (class, method, N, density) -> Cell, the variant pooled; vcells keep it apart (the
+        # table's rows when variants differ).
+        self.cells = group_cells(t, lambda x: (x.cls, x.method, x.n, x.density))
+        self.vcells = group_cells(t, lambda x: (x.cls, x.method, x.n, x.density, x.variant))
+
+    def cell(self, cls, method, n, density):
+        return self.cells.get((cls, method, n, density))
+
+    def pooled(self, cls=None, method=None, n=None, density=None):
+        """A Cell of every trial matching the given settings (None: any)."""
+        return Cell([x for x in self.trials
+                     if (cls is None or x.cls == cls) and (method is None or x.method == method)
+                     and (n is None or x.n == n) and (density is None or x.density == density)])
+
+
+def group_cells(trials, key):
+    groups = defaultdict(list)
+    for x in trials:
+        groups[key(x)].append(x)
+    return {k: Cell(v) for k, v in groups.items()}
