@@ -26,6 +26,11 @@ stage "release tests"
 ctest --test-dir "$BUILD" --no-tests=error --output-on-failure -j"$JOBS"
 # The package: cmake --install to a fresh prefix, examples/downstream built against it with
 # find_package(rearm) and run, and the installed rearm run from another directory draws run.png.
+# The behaviour gate (scripts/behaviour_gate.py): the paper scenes under both variants, the corpus
+# in checked mode and each switch's shortest sweep trials with and without it, hashed against
+# tests/gate/hashes.txt (about 40 s). A change of behaviour re-records them and says why.
+stage "behaviour gate"
+python3 scripts/behaviour_gate.py --rearm "$BUILD/bin/rearm" --jobs "$JOBS" --work "$BUILD/gate"
 stage "package"
 bash scripts/check_install.sh "$BUILD"
 
