@@ -94,7 +94,10 @@ def run_case(rearm, case, work):
         raise RuntimeError("%s exited %d: %s" % (" ".join(cmd), p.returncode, p.stderr.strip()))
     traj = open(os.path.join(out, "trajectory.json"), "rb").read()
     metrics = json.load(open(os.path.join(out, "metrics.json")))
-    stable = json.dumps(strip_wall_clock(metrics), sort_keys=True).encode()
+    stable = strip_wall_clock(metrics)
+    # The scenario path depends on --work for the switched-off copies: hash its file name only.
+    stable["source"] = os.path.basename(stable.get("source", ""))
+    stable = json.dumps(stable, sort_keys=True).encode()
     return sha(traj), sha(stable), metrics
 
 
@@ -196,6 +199,8 @@ def main():
             sys.exit("gate: not recorded, runs failed:\n  " + "\n  ".join(failures))
         rev = subprocess.run(["git", "rev-parse", "--short", "HEAD"], cwd=ROOT,
                              capture_output=True, text=True).stdout.strip()
+        if subprocess.run(["git", "diff", "--quiet", "HEAD"], cwd=ROOT).returncode != 0:
+            rev += " with uncommitted changes"
         os.makedirs(os.path.dirname(HASHES), exist_ok=True)
         with open(HASHES, "w") as f:
             f.write("# behaviour gate (scripts/behaviour_gate.py): case, sha256 of trajectory.json,"

@@ -10,6 +10,7 @@
 #include "core/error.h"
 #include "core/stopwatch.h"
 #include "core/text.h"
+#include "executive/motion_checks.h"
 #include "executive/path_tracker.h"
 #include "geometry/dilation.h"
 #include "geometry/distance.h"
@@ -108,40 +109,25 @@ const char* to_string(ActionOutcome o) {
   return "?";
 }
 
-std::string Executive::Activity::name() const {
-  switch (kind) {
-    case Kind::kMove:
-      return "move(" + region + ")";
-    case Kind::kGrasp:
-      return "grasp(" + object + ")";
-    case Kind::kRelease:
-      return "release(" + object + "," + region + ")";
-    case Kind::kDisassemble:
-      return "disassemble(" + object + ")";
-  }
-  return "?";
-}
-
 Executive::Executive(const ExecutiveParams& params, const std::vector<RegionOfInterest>& regions,
                      symbolic::MissionController& mission, const perception::SemanticMap& map)
     : p_(params),
       regions_(validated(regions, map.workspace())),
       mission_(mission),
       map_(map),
-      controller_(params.diffeo, params.nav) {
+      controller_(params.diffeo, params.nav),
+      ctx_{p_,          regions_,        map_,
+           controller_, topology_cache_, drop_dilations_,
+           times_,      recoveries_,     topology_checks_} {
   validate(p_);
   controller_.set_convex_fallback(p_.robust.convex_fallback);
-  controller_.set_miter_limit(miter_limit());
-  topology_cache_.set_miter_limit(miter_limit());
-  drop_dilations_.set_miter_limit(miter_limit());
+  controller_.set_miter_limit(miter_limit(p_));
+  topology_cache_.set_miter_limit(miter_limit(p_));
+  drop_dilations_.set_miter_limit(miter_limit(p_));
 }
 
-double Executive::miter_limit() const {
-  return p_.robust.bevel ? kBevelMiterLimit : geometry::kMiterLimit;
-}
-
-Executive::Activity Executive::make(Kind kind, std::string object, std::string region, bool fix,
-                                    double t) const {
+ActionState Executive::make(Kind kind, std::string object, std::string region, bool fix,
+                            double t) const {
   Activity a;
   a.kind = kind;
   a.object = std::move(object);
@@ -153,7 +139,7 @@ Executive::Activity Executive::make(Kind kind, std::string object, std::string r
   return a;
 }
 
-Executive::Activity* Executive::current() {
+ActionState* Executive::current() {
   if (!fix_.empty()) return &fix_.back();
   return ltl_ ? &*ltl_ : nullptr;
 }
@@ -161,23 +147,6 @@ Executive::Activity* Executive::current() {
 std::string Executive::current_action() const {
   if (!fix_.empty()) return fix_.back().name();
   return ltl_ ? ltl_->name() : std::string();
-}
-
-const RegionOfInterest& Executive::region(const std::string& id) const {
-  for (const RegionOfInterest& r : regions_) {
-    if (r.id == id) return r;
-  }
-  throw Error("executive: unknown region of interest '" + id + "'");
-}
-
-double Executive::object_radius(const std::string& id) const {
-  const auto d = map_.object(id);
-  if (!d) throw Error("executive: unknown object '" + id + "'");
-  return d->radius;
-}
-
-reactive::SemanticInput Executive::semantic_input() const {
-  return reactive::SemanticInput{map_.workspace(), map_.familiar(), map_.unknown(), map_.movable()};
 }
 
 bool Executive::knowledge_changed(const Activity& a) const {
@@ -237,8 +206,8 @@ bool Executive::fetch_ltl(double t) {
   ltl_->ltl = *next;
   fix_rounds_ = 0;
   // Unknown names fail here, with the name, rather than deep inside a phase.
-  if (!ltl_->region.empty()) region(ltl_->region);
-  if (!ltl_->object.empty()) object_radius(ltl_->object);
+  if (!ltl_->region.empty()) region(ctx_, ltl_->region);
+  if (!ltl_->object.empty()) object_radius(ctx_, ltl_->object);
   return true;
 }
 
@@ -294,7 +263,7 @@ Command Executive::step(const Pose& pose, double t, double dt) {
   return Command{Twist{}, gripper_, gripper_object_};
 }
 
-Executive::Advance Executive::advance(Activity& a, const Pose& pose, double t, double dt) {
+Advance Executive::advance(Activity& a, const Pose& pose, double t, double dt) {
   switch (a.phase) {
     case Phase::kNavigate:
       return prerequisites_then_navigate(a, pose, t, dt);
@@ -319,8 +288,7 @@ Executive::Advance Executive::advance(Activity& a, const Pose& pose, double t, d
 
 // Gripper prerequisites (interface-layer steps, beyond the paper; see the header), then the
 // navigation phase.
-Executive::Advance Executive::prerequisites_then_navigate(Activity& a, const Pose& pose, double t,
-                                                          double dt) {
+Advance Executive::prerequisites_then_navigate(Activity& a, const Pose& pose, double t, double dt) {
   Advance out;
   const std::optional<std::string> carried = map_.carried();
   std::vector<Activity> before;  // execution order
@@ -349,7 +317,7 @@ Executive::Advance Executive::prerequisites_then_navigate(Activity& a, const Pos
 }
 
 // GRASP: turn in place until the gripper faces the object (paper §V-B).
-Executive::Advance Executive::align(Activity& a, const Pose& pose, double t) {
+Advance Executive::align(Activity& a, const Pose& pose, double t) {
   Advance out;
   const geometry::Disk m = *map_.object(a.object);
   if (reactive::aligned(pose.psi, pose.x, m.center, p_.align_tolerance)) {
@@ -369,7 +337,7 @@ Executive::Advance Executive::align(Activity& a, const Pose& pose, double t) {
 }
 
 // GRASP: drive straight in to dock_gap from contact, then close the gripper.
-Executive::Advance Executive::dock(Activity& a, const Pose& pose, double t, double dt) {
+Advance Executive::dock(Activity& a, const Pose& pose, double t, double dt) {
   Advance out;
   const geometry::Disk m = *map_.object(a.object);
   const double gap = (m.center - pose.x).norm() - p_.robot_radius - m.radius;
@@ -394,7 +362,7 @@ Executive::Advance Executive::dock(Activity& a, const Pose& pose, double t, doub
 }
 
 // GRASP: the tick after the close command, the map must report the object carried.
-Executive::Advance Executive::grip(Activity& a, const Pose& pose, double t) {
+Advance Executive::grip(Activity& a, const Pose& pose, double t) {
   Advance out;
   if (map_.carried() != a.object) {
     out.kind = Advance::kStuck;
@@ -423,7 +391,7 @@ Executive::Advance Executive::grip(Activity& a, const Pose& pose, double t) {
 double Executive::withdraw_distance(const Activity& a, const Pose& pose) const {
   constexpr double kWithdrawSample = 0.01;
   const geometry::Disk m = *map_.object(a.object);
-  const double pair_radius = plan_radius() + m.radius + p_.grasp.pair_margin;
+  const double pair_radius = plan_radius(ctx_) + m.radius + p_.grasp.pair_margin;
   const Point back = -Point(std::cos(pose.psi), std::sin(pose.psi));
   const Point xc = reactive::pair_center(pose.x, pose.psi, m.radius);
   double best = known_clearance(map_, xc, a.object);
@@ -431,7 +399,7 @@ double Executive::withdraw_distance(const Activity& a, const Pose& pose) const {
   const int samples = static_cast<int>(std::floor(p_.robust.withdraw_max / kWithdrawSample));
   for (int k = 0; k <= samples; ++k) {
     const double s = k * kWithdrawSample;
-    if (!reverse_clear(m, a.object, pose.x + s * back, m.center + s * back)) break;
+    if (!reverse_clear(ctx_, m, a.object, pose.x + s * back, m.center + s * back)) break;
     const double c = known_clearance(map_, xc + s * back, a.object);
     if (c >= pair_radius + p_.robust.withdraw_clearance) return s;
     if (c > best) {
@@ -442,17 +410,9 @@ double Executive::withdraw_distance(const Activity& a, const Pose& pose) const {
   return best_s;
 }
 
-// The robot at `robot` and the gripped object `m` (id `object`) moved to `object_at` keep clear
-// of everything known (the robot by the plan radius, the object by the contact margin).
-bool Executive::reverse_clear(const geometry::Disk& m, const std::string& object,
-                              const Point& robot, const Point& object_at) const {
-  return known_clearance(map_, robot, object) >= plan_radius() &&
-         known_clearance(map_, object_at, object) >= m.radius + p_.robust.contact_margin;
-}
-
 // GRASP, robust variant: reverse straight to withdraw_distance(), each step checked again
 // against the map (a fragment seen on the way ends it).
-Executive::Advance Executive::withdraw(Activity& a, const Pose& pose, double t, double dt) {
+Advance Executive::withdraw(Activity& a, const Pose& pose, double t, double dt) {
   Advance out;
   const geometry::Disk m = *map_.object(a.object);
   auto done = [&](const std::string& how) {
@@ -468,7 +428,7 @@ Executive::Advance Executive::withdraw(Activity& a, const Pose& pose, double t, 
   const double v = std::min(p_.backoff_speed, (a.withdraw_goal - a.withdrawn) / dt);
   out.u.v = -v;
   const Pose next = reactive::unicycle_step(pose, out.u, dt);
-  if (!reverse_clear(m, a.object, next.x, m.center + (next.x - pose.x))) {
+  if (!reverse_clear(ctx_, m, a.object, next.x, m.center + (next.x - pose.x))) {
     return done(" (blocked behind)");
   }
   a.withdrawn += v * dt;
@@ -481,7 +441,7 @@ Executive::Advance Executive::withdraw(Activity& a, const Pose& pose, double t, 
 // say so on the next tick. Every way into this phase asks for the stop; this check keeps it
 // true where two actions end in one tick (a withdrawal ending as the DISASSEMBLE that needed
 // the grasp stops at once).
-Executive::Advance Executive::open(Activity& a, double t) {
+Advance Executive::open(Activity& a, double t) {
   Advance out;
   if (map_.carried()) {
     if (last_u_.v != 0 || last_u_.omega != 0) return out;  // stop this tick, open the next
@@ -502,11 +462,11 @@ Executive::Advance Executive::open(Activity& a, double t) {
 
 // RELEASE, DISASSEMBLE: back off straight until the robot is clear of the released object's
 // dilation, so the next action starts in the freespace.
-Executive::Advance Executive::back_off(Activity& a, const Pose& pose, double t, double dt) {
+Advance Executive::back_off(Activity& a, const Pose& pose, double t, double dt) {
   Advance out;
   const geometry::Disk m = *map_.object(a.object);
   const double need =
-      geometry::disk_polygon_circumradius(m.radius + plan_radius() + geometry::kContactSlack) +
+      geometry::disk_polygon_circumradius(m.radius + plan_radius(ctx_) + geometry::kContactSlack) +
       p_.backoff_margin;
   const double d = (m.center - pose.x).norm();
   if (d >= need) {
@@ -529,15 +489,15 @@ Executive::Advance Executive::back_off(Activity& a, const Pose& pose, double t, 
   return out;
 }
 
-Executive::Advance Executive::navigate(Activity& a, const Pose& pose, double t, double dt) {
-  const auto [rho, radius, center] = moving(a, pose);
+Advance Executive::navigate(Activity& a, const Pose& pose, double t, double dt) {
+  const auto [rho, radius, center] = moving(ctx_, a, pose);
   if (a.backing) return back_out(a, pose, t, dt);
 
   // A grasp approach point chosen earlier may have lost its clearance to a newly seen unknown
   // fragment (the topology knowledge is unchanged then).
   if (a.planned && a.kind == Kind::kGrasp && a.built && a.checked_version != map_.version()) {
     a.checked_version = map_.version();
-    if (known_clearance(map_, *a.target) < plan_radius(a)) a.planned = false;
+    if (known_clearance(map_, *a.target) < plan_radius(ctx_, a)) a.planned = false;
   }
   if (!a.planned || knowledge_changed(a)) {
     Advance p;
@@ -610,14 +570,14 @@ bool Executive::stale(Activity& a, double radius, const Point& center) {
 // The diffeomorphism for the current map, radius and x* (reactive controller of [7]); a guide
 // whose next waypoint left the new mapped space is planned again. center_not_free: the centre
 // is not in the freespace (the caller backs out, or ends stuck in the paper variant).
-Executive::Advance Executive::rebuild(Activity& a, double radius, const Point& center, double t) {
+Advance Executive::rebuild(Activity& a, double radius, const Point& center, double t) {
   Advance out;
   const Point target = *a.target;
   controller_.set_convexify_all(a.convex_all);
   reactive::RebuildResult rr;
   {
     const ScopedStopwatch sw(times_.rebuild_s);
-    rr = controller_.try_rebuild(semantic_input(), radius, center, target);
+    rr = controller_.try_rebuild(semantic_input(ctx_), radius, center, target);
   }
   if (rr.status == reactive::RebuildStatus::kCenterNotFree) {
     a.built = false;
@@ -693,8 +653,7 @@ void Executive::replan_guide(Activity& a, const Point& center) const {
 
 // Reached x* (MOVE: done; GRASP: align; RELEASE, DISASSEMBLE: stop and open), or the early stop
 // of DISASSEMBLE (paper §V-B); nullopt while still on the way.
-std::optional<Executive::Advance> Executive::arrive(Activity& a, const Point& center, double rho,
-                                                    double t) {
+std::optional<Advance> Executive::arrive(Activity& a, const Point& center, double rho, double t) {
   Advance out;
   const double tol = a.kind == Kind::kGrasp ? p_.grasp_goal_tolerance : p_.goal_tolerance;
   bool reached = a.guide.empty() && (center - a.goal).norm() <= tol;
@@ -733,14 +692,14 @@ std::optional<Executive::Advance> Executive::arrive(Activity& a, const Point& ce
 
 // The progress monitor fired (a rest point, saddle or limit cycle of [7]): in the robust
 // variant the law's goal becomes the next waypoint of a path in the known freespace F_k.
-Executive::Advance Executive::recover(Activity& a, const Pose& pose, const Point& center,
-                                      const std::string& why, double t, double dt) {
+Advance Executive::recover(Activity& a, const Pose& pose, const Point& center,
+                           const std::string& why, double t, double dt) {
   Advance out;
   if (a.kind == Kind::kRelease && p_.robust.early_release && map_.carried() == a.object) {
     // RELEASE(M, ℓ) holds once M lies in ℓ (paper §II-B), wherever in ℓ: stopped short of the
     // centroid with M inside ℓ, release here.
     const geometry::Disk m = *map_.object(a.object);
-    const geometry::Polygon& goal = region(a.region).polygon;
+    const geometry::Polygon& goal = region(ctx_, a.region).polygon;
     if (geometry::contains(goal, m.center) &&
         -geometry::signed_distance(goal, m.center) >= p_.goal_tolerance) {
       ++recoveries_.early_releases;
@@ -794,7 +753,7 @@ Executive::Advance Executive::recover(Activity& a, const Pose& pose, const Point
 // (measured: the pair pushed into a corner of F_k beside its drop point, four back-ups without
 // a millimetre of motion). rebuild() asks the same when every drop point was taken and the
 // paper's target is cut off as well. nullopt otherwise.
-std::optional<Executive::Advance> Executive::drop_short(Activity& a, const Point& at, double t) {
+std::optional<Advance> Executive::drop_short(Activity& a, const Point& at, double t) {
   if (a.kind != Kind::kDisassemble || !p_.robust.early_release || map_.carried() != a.object) {
     return std::nullopt;
   }
@@ -816,7 +775,7 @@ bool Executive::drop_points(const Activity& a) const {
 // Robust variant (RobustParams::redrop): the law and every guide failed to reach a DISASSEMBLE's
 // drop point; it is rejected with its surroundings (drop_point) and the action plans again with
 // a fresh guide budget, up to kMaxRedrops per action. nullopt otherwise.
-std::optional<Executive::Advance> Executive::redrop(Activity& a, double t) {
+std::optional<Advance> Executive::redrop(Activity& a, double t) {
   if (a.kind != Kind::kDisassemble || !p_.robust.redrop || !p_.robust.drop || !a.target ||
       a.redrops >= kMaxRedrops) {
     return std::nullopt;
@@ -842,10 +801,10 @@ std::optional<Executive::Advance> Executive::redrop(Activity& a, double t) {
 // obstacles as they are), the first check that separates x* by objects names the objects that
 // narrow the passage below what the law of [7] gets through: Fix mode moves them (paper §IV),
 // then the action plans again. Once per action; nullopt when fixed obstacles alone narrow it.
-std::optional<Executive::Advance> Executive::narrow(Activity& a, const Pose& pose) {
+std::optional<Advance> Executive::narrow(Activity& a, const Pose& pose) {
   if (!p_.robust.narrow || a.narrowed || !a.target) return std::nullopt;
   a.narrowed = true;
-  const auto [rho, radius, center] = moving(a, pose);
+  const auto [rho, radius, center] = moving(ctx_, a, pose);
   const std::optional<Narrowing> n =
       grown_blockers(map_.familiar(), true, radius, center, *a.target);
   if (!n) return std::nullopt;
@@ -897,9 +856,9 @@ std::optional<Executive::Narrowing> Executive::grown_blockers(
 
 // Fix mode (paper §IV) for the objects `blocking` (indices into the map's movable objects) but
 // the action's own object, with the action's recovery counts reset; nullopt when none is left.
-std::optional<Executive::Advance> Executive::fix_mode_for(Activity& a,
-                                                          const std::vector<std::size_t>& blocking,
-                                                          std::string reason) {
+std::optional<Advance> Executive::fix_mode_for(Activity& a,
+                                               const std::vector<std::size_t>& blocking,
+                                               std::string reason) {
   Advance out;
   const auto& ids = map_.movable_ids();
   for (std::size_t i : blocking) {
@@ -921,16 +880,16 @@ std::optional<Executive::Advance> Executive::fix_mode_for(Activity& a,
 // without. The check runs again with the fragments as fixed obstacles (mitered, a superset of
 // the controller's round dilations); objects that close the way with them are moved by Fix mode
 // (paper §IV), once per action. nullopt when fixed obstacles alone close it.
-std::optional<Executive::Advance> Executive::fragment_blockers(Activity& a, double radius,
-                                                               const Point& center) {
+std::optional<Advance> Executive::fragment_blockers(Activity& a, double radius,
+                                                    const Point& center) {
   if (!p_.robust.fragments || a.fragments_checked || !a.target) return std::nullopt;
   a.fragments_checked = true;
   return closing_with_fragments(a, radius, center);
 }
 
 // fragment_blockers' check, whichever recovery asks for it.
-std::optional<Executive::Advance> Executive::closing_with_fragments(Activity& a, double radius,
-                                                                    const Point& center) {
+std::optional<Advance> Executive::closing_with_fragments(Activity& a, double radius,
+                                                         const Point& center) {
   std::vector<geometry::Polygon> fixed = map_.familiar();
   fixed.insert(fixed.end(), map_.unknown().begin(), map_.unknown().end());
   if (p_.robust.memory) {
@@ -976,8 +935,8 @@ std::optional<Executive::Advance> Executive::closing_with_fragments(Activity& a,
 // Not for DISASSEMBLE, whose drop point has alternatives (drop_point), as in rebuild: Fix mode
 // for it drops the carried object by another DISASSEMBLE, which met the same hulls and nested
 // Fix mode to its limit (measured).
-std::optional<Executive::Advance> Executive::closed_by_memory(Activity& a, double radius,
-                                                              const Point& center) {
+std::optional<Advance> Executive::closed_by_memory(Activity& a, double radius,
+                                                   const Point& center) {
   if (!a.memory_closed) return std::nullopt;
   a.memory_closed = false;
   if (!p_.robust.fragments || a.memory_checked || !a.target || a.kind == Kind::kDisassemble) {
@@ -1086,14 +1045,14 @@ std::vector<geometry::Polygon> Executive::seen_dilated(double radius) const {
 
 // Robust variant (RobustParams::face): after a back-up, turn in place toward the law's goal
 // `nav` (kFaceTolerance), as far as the carried object stays clear; then the law resumes.
-std::optional<Executive::Advance> Executive::face(Activity& a, const Pose& pose, const Point& nav,
-                                                  double t, double dt) {
+std::optional<Advance> Executive::face(Activity& a, const Pose& pose, const Point& nav, double t,
+                                       double dt) {
   Advance out;
   out.u = reactive::align_command(pose.psi, pose.x, nav, p_.nav);
   if ((nav - pose.x).norm() <= p_.goal_tolerance ||
       reactive::aligned(pose.psi, pose.x, nav, kFaceTolerance) ||
-      (map_.carried() && !step_clear(pose, reactive::unicycle_step(pose, out.u, dt))) ||
-      !centre_kept(pose, reactive::unicycle_step(pose, out.u, dt))) {
+      (map_.carried() && !step_clear(ctx_, pose, reactive::unicycle_step(pose, out.u, dt))) ||
+      !centre_kept(ctx_, pose, reactive::unicycle_step(pose, out.u, dt))) {
     a.facing = Facing::kNo;
     a.monitor.reset(t);
     return std::nullopt;
@@ -1106,50 +1065,28 @@ std::optional<Executive::Advance> Executive::face(Activity& a, const Pose& pose,
 // Robust variant (RobustParams::track): the next step along the guide toward `nav`
 // (path_tracker.h) when it keeps the centre in F_k and everything clear; else the law takes over
 // for the rest of this guide.
-std::optional<Executive::Advance> Executive::track(Activity& a, const Pose& pose, const Point& nav,
-                                                   double rho, double dt) {
+std::optional<Advance> Executive::track(Activity& a, const Pose& pose, const Point& nav, double rho,
+                                        double dt) {
   Advance out;
   out.u = track_command(pose, rho, nav, p_.nav);
   const Pose next = reactive::unicycle_step(pose, out.u, dt);
   const Point next_center = rho > 0 ? reactive::pair_center(next.x, next.psi, rho) : next.x;
-  if (reactive::in_freespace(controller_.mapped(), next_center) && step_clear(pose, next)) {
+  if (reactive::in_freespace(controller_.mapped(), next_center) && step_clear(ctx_, pose, next)) {
     return out;
   }
   a.tracking = false;
   return std::nullopt;
 }
 
-// The step from `pose` to `next` keeps the robot, and the object it carries (rigidly: its offset
-// turns with the heading), clear of everything the map knows.
-bool Executive::step_clear(const Pose& pose, const Pose& next) const {
-  // Within kStepClearance of what is known, a step may not come closer: a back-up that slid
-  // along an unknown obstacle at 0.1 mm, choosing a new move every few steps, touched it in
-  // Box2D (measured).
-  auto kept = [&](const Point& from, const Point& to, double radius) {
-    const double after = known_clearance(map_, to) - radius;
-    return after >= kStepClearance || after >= known_clearance(map_, from) - radius;
-  };
-  if (known_clearance(map_, next.x) < p_.robot_radius || !kept(pose.x, next.x, p_.robot_radius)) {
-    return false;
-  }
-  if (const std::optional<std::string> carried = map_.carried()) {
-    const geometry::Disk m = *map_.object(*carried);
-    const Point moved = next.x + Eigen::Rotation2Dd(next.psi - pose.psi) * (m.center - pose.x);
-    if (known_clearance(map_, moved) < m.radius || !kept(m.center, moved, m.radius)) return false;
-  }
-  return true;
-}
-
 // The reactive law's command; a singular Dh switches the action to convex pieces (robust
 // variant) and rebuilds on the next transition.
-Executive::Advance Executive::command(Activity& a, const Pose& pose, double rho, double t,
-                                      double dt) {
+Advance Executive::command(Activity& a, const Pose& pose, double rho, double t, double dt) {
   Advance out;
   try {
     out.u = map_.carried() ? controller_.pair(pose, rho, dt) : controller_.unicycle(pose, dt);
     law_command_ = true;
   } catch (const reactive::OutsideModelFreespace& e) {
-    if (p_.robust.convex_fallback && !a.convex_all && centre_inside(a, pose)) {
+    if (p_.robust.convex_fallback && !a.convex_all && centre_inside(ctx_, a, pose)) {
       // The centre lies inside F_k, clear of ∂F_k, yet h took it into a model obstacle: the
       // purge of a cluster deforms space across a convex obstacle near it (the separation of
       // [7] broken). Convex pieces keep h the identity there.
@@ -1183,35 +1120,8 @@ std::optional<std::string> Executive::law_invariant_violation() const {
   return std::nullopt;
 }
 
-// Robust variant, carrying: does a checked move (a turn toward the goal, a back-up) keep the pair
-// centre in the last mapped freespace F_k, or, when it is outside already, take it no deeper?
-// The pair centre lies ahead of the axle, so a turn in place swings it: turns after a back-up
-// took it 3 cm into a dilation (measured), where the law of [7] cannot run (its model point lies
-// in a model obstacle) and four back-ups were spent in vain. Without an object: always.
-bool Executive::centre_kept(const Pose& pose, const Pose& next) const {
-  const std::optional<std::string> carried = map_.carried();
-  if (!carried || controller_.mapped().freespace.outer.size() < 3) return true;
-  const double rho = object_radius(*carried);
-  const geometry::Region& free = controller_.mapped().freespace;
-  auto depth = [&](const Pose& q) {
-    const Point c = reactive::pair_center(q.x, q.psi, rho);
-    const double d = geometry::nearest_on_boundary(free, c).distance;
-    return geometry::contains(free, c) ? -d : d;
-  };
-  const double after = depth(next);
-  return after <= 0 || after <= depth(pose);
-}
-
-// Is the centre (robot, or pair) inside the mapped freespace F_k, kContactClearance from ∂F_k?
-bool Executive::centre_inside(const Activity& a, const Pose& pose) const {
-  const Point center = moving(a, pose).center;
-  const geometry::Region& free = controller_.mapped().freespace;
-  return geometry::contains(free, center) &&
-         geometry::nearest_on_boundary(free, center).distance >= kContactClearance;
-}
-
-Executive::Advance Executive::start_back_out(Activity& a, const Pose& pose, const std::string& why,
-                                             double t, double dt, bool contact) {
+Advance Executive::start_back_out(Activity& a, const Pose& pose, const std::string& why, double t,
+                                  double dt, bool contact) {
   Advance out;
   out.kind = Advance::kStuck;
   out.reason = why;
@@ -1236,10 +1146,10 @@ Executive::Advance Executive::start_back_out(Activity& a, const Pose& pose, cons
 // of everything known and takes the centre (robot, or pair) farther from it, else the first that
 // keeps them clear; kept while it stays clear, until the centre has moved back_out_step; then
 // the action plans again from where it stopped.
-Executive::Advance Executive::back_out(Activity& a, const Pose& pose, double t, double dt) {
+Advance Executive::back_out(Activity& a, const Pose& pose, double t, double dt) {
   Advance out;
   const std::optional<std::string> carried = map_.carried();
-  const double rho = carried ? object_radius(*carried) : 0;
+  const double rho = carried ? object_radius(ctx_, *carried) : 0;
   auto finish_backing = [&] {
     a.backing = false;
     a.facing = p_.robust.face ? Facing::kPending : Facing::kNo;
@@ -1273,7 +1183,7 @@ Executive::Advance Executive::back_out(Activity& a, const Pose& pose, double t, 
   }
   auto usable = [&](int k, bool away) {
     const Pose next = reactive::unicycle_step(pose, moves[k], dt);
-    if (!step_clear(pose, next)) return false;
+    if (!step_clear(ctx_, pose, next)) return false;
     return !away || known_clearance(map_, centre(next), carried.value_or("")) > here;
   };
   if (a.backing_dir < 0 || !usable(a.backing_dir, false)) {
@@ -1312,7 +1222,7 @@ int Executive::clearest_pair_move(const Pose& pose, std::span<const Twist> moves
     double travel = 0;
     while (travel < p_.robust.back_out_step) {
       const Pose next = reactive::unicycle_step(q, moves[k], dt);
-      if (!step_clear(pose, next) || !centre_kept(q, next)) break;
+      if (!step_clear(ctx_, pose, next) || !centre_kept(ctx_, q, next)) break;
       q = next;
       travel += (std::abs(moves[k].v) + rho * std::abs(moves[k].omega)) * dt;
     }
@@ -1330,7 +1240,7 @@ int Executive::clearest_pair_move(const Pose& pose, std::span<const Twist> moves
 // sampled every kEscapeSample up to back_out_step while nothing known comes closer than r (or
 // than it is at x, if x is closer), the clearest sample; the clearest of all, if it is clearer
 // than x: its heading and distance.
-std::optional<Executive::Escape> Executive::escape_line(const Point& x) const {
+std::optional<Escape> Executive::escape_line(const Point& x) const {
   const double here = known_clearance(map_, x);
   const double floor = std::min(p_.robot_radius, here);
   const double step = p_.robust.back_out_step;
@@ -1383,15 +1293,9 @@ geometry::RegionSet Executive::pair_freespace(const std::string& object) {
   ++topology_checks_;
   return topology::freespace_components(
       topology::make_input(map_.workspace(), map_.familiar(), map_.movable(),
-                           plan_radius() + object_radius(object) + p_.grasp.pair_margin, c, c,
-                           index, topology_cache_),
+                           plan_radius(ctx_) + object_radius(ctx_, object) + p_.grasp.pair_margin,
+                           c, c, index, topology_cache_),
       topology_cache_);
-}
-
-double Executive::max_object_radius() const {
-  double m = 0;
-  for (const auto& o : map_.ground_truth().movable) m = std::max(m, o.disk.radius);
-  return m;
 }
 
 // Robust drop rule: the paper's early-stop test (clear of every region, and 2(r + max ρ) from
@@ -1405,23 +1309,7 @@ bool Executive::drop_clear(const Point& xc, double rho, double slack) const {
     return false;
   }
   return known_clearance(map_, xc, *carried) >=
-         kDropClearance * (p_.robot_radius + max_object_radius()) + slack;
-}
-
-double Executive::plan_radius() const { return p_.robot_radius + p_.robust.contact_margin; }
-
-double Executive::plan_radius(const Activity& a) const {
-  return a.bare ? p_.robot_radius : plan_radius();
-}
-
-// What the law moves for action a: the robot (radius plan_radius(a), centre x), or with an
-// object in the gripper the robot–object pair (radius + ρ + pair_margin, centre x_c).
-Executive::Moving Executive::moving(const Activity& a, const Pose& pose) const {
-  const std::optional<std::string> carried = map_.carried();
-  const double r = plan_radius(a);
-  if (!carried) return {0, r, pose.x};
-  const double rho = object_radius(*carried);
-  return {rho, r + rho + p_.grasp.pair_margin, reactive::pair_center(pose.x, pose.psi, rho)};
+         kDropClearance * (p_.robot_radius + max_object_radius(ctx_)) + slack;
 }
 
 std::size_t Executive::restore_limit() const {
@@ -1430,7 +1318,7 @@ std::size_t Executive::restore_limit() const {
 
 bool Executive::in_region(const std::string& object, const std::string& id) const {
   const auto d = map_.object(object);
-  return d && geometry::contains(region(id).polygon, d->center);
+  return d && geometry::contains(region(ctx_, id).polygon, d->center);
 }
 
 // Robust variant: the mission is accepting, but Fix mode moved objects that LTL actions had
@@ -1483,15 +1371,15 @@ RecoveryCounts Executive::recoveries() const {
 
 // The action's plan (paper §IV, §V): x* and the topology check's verdict; GRASP and
 // DISASSEMBLE have their own.
-Executive::Advance Executive::plan(Activity& a, const Pose& pose) {
+Advance Executive::plan(Activity& a, const Pose& pose) {
   if (a.kind == Kind::kGrasp) return plan_grasp(a, pose);
   Advance out;
   const std::optional<std::string> carried = map_.carried();
-  const auto [rho, radius, center] = moving(a, pose);
+  const auto [rho, radius, center] = moving(ctx_, a, pose);
   if (a.kind == Kind::kDisassemble) return plan_disassemble(a, radius, center, rho);
 
-  const Point target = region_target(region(a.region));
-  const topology::TopologyResult res = timed_check(radius, center, target);
+  const Point target = region_target(region(ctx_, a.region));
+  const topology::TopologyResult res = timed_check(ctx_, radius, center, target);
   ++topology_checks_;
   a.target = target;
   if (a.kind == Kind::kRelease && p_.robust.release_point && carried == a.object &&
@@ -1499,8 +1387,8 @@ Executive::Advance Executive::plan(Activity& a, const Pose& pose) {
     // Robust variant: the centroid is cut off; anywhere in ℓ that the pair reaches now, as
     // clear as ℓ allows.
     const double inset = p_.robot_radius + p_.grasp.pair_margin + 2 * p_.goal_tolerance;
-    const double enough = 2 * (p_.robot_radius + max_object_radius());
-    if (auto p = release_point(res.freespace, region(a.region), map_, a.object, inset, enough,
+    const double enough = 2 * (p_.robot_radius + max_object_radius(ctx_));
+    if (auto p = release_point(res.freespace, region(ctx_, a.region), map_, a.object, inset, enough,
                                kReleaseStep)) {
       a.target = *p;
       ++recoveries_.release_points;
@@ -1513,7 +1401,7 @@ Executive::Advance Executive::plan(Activity& a, const Pose& pose) {
       remember_plan(a);
       return out;
     case topology::Verdict::kBlockedByFixed:
-      if (!a.bare && plan_radius(a) > p_.robot_radius) {
+      if (!a.bare && plan_radius(ctx_, a) > p_.robot_radius) {
         // Robust variant: a passage only the contact margin closes is taken at the bare radius
         // (the paper's), for this action only.
         a.bare = true;
@@ -1541,10 +1429,9 @@ void Executive::remember_plan(Activity& a) const {
 // DISASSEMBLE's x* (paper §V-B): the midpoint of an edge of the pair's freespace F, kept while it
 // stays in F so the target does not jump as the map grows. Robust variant: the nearest point of
 // F where the object can be dropped clear of everything (drop_clear), when there is one.
-Executive::Advance Executive::plan_disassemble(Activity& a, double radius, const Point& center,
-                                               double rho) {
+Advance Executive::plan_disassemble(Activity& a, double radius, const Point& center, double rho) {
   Advance out;
-  const topology::TopologyResult res = timed_check(radius, center, center);
+  const topology::TopologyResult res = timed_check(ctx_, radius, center, center);
   ++topology_checks_;
   if (drop_points(a) && (!a.target || !geometry::contains(res.freespace, *a.target) ||
                          !drop_kept(a, *a.target, rho))) {
@@ -1571,7 +1458,7 @@ bool Executive::drop_kept(const Activity& a, const Point& q, double rho) const {
   if (!carried || !clear_of_regions(q, p_.robot_radius + rho, regions_)) return false;
   if (a.drop_level >= kDropLevels.size()) return true;
   return known_clearance(map_, q, *carried) >=
-         kDropLevels[a.drop_level] * (p_.robot_radius + max_object_radius());
+         kDropLevels[a.drop_level] * (p_.robot_radius + max_object_radius(ctx_));
 }
 
 // The robust variant's drop point: searched in the pair's mapped freespace F_k (the visible
@@ -1583,12 +1470,12 @@ bool Executive::drop_kept(const Activity& a, const Point& q, double rho) const {
 // points 2–3 m away in unexplored space, eight of them taken in turn).
 std::optional<Point> Executive::drop_point(Activity& a, const geometry::Region& free, double radius,
                                            const Point& center, double rho) {
-  const double unit = p_.robot_radius + max_object_radius();
+  const double unit = p_.robot_radius + max_object_radius(ctx_);
   geometry::Region where = free;
   try {
     const ScopedStopwatch sw(times_.rebuild_s);
-    where =
-        reactive::build_mapped_space(semantic_input(), radius, center, drop_dilations_).freespace;
+    where = reactive::build_mapped_space(semantic_input(ctx_), radius, center, drop_dilations_)
+                .freespace;
   } catch (const reactive::NotInFreespace&) {
   }
   // Exact clearance of each level from everything known; the raster measures from ∂F_k, which
@@ -1616,7 +1503,7 @@ std::optional<Point> Executive::drop_point(Activity& a, const geometry::Region& 
   return q->point;
 }
 
-Executive::Advance Executive::plan_grasp(Activity& a, const Pose& pose) {
+Advance Executive::plan_grasp(Activity& a, const Pose& pose) {
   Advance out;
   const double r = p_.robot_radius;
   const std::vector<GraspCandidate> candidates =
@@ -1632,8 +1519,8 @@ Executive::Advance Executive::plan_grasp(Activity& a, const Pose& pose) {
   // Exact freespaces: the robot's (every object an obstacle) and the pair's once gripped (the
   // object carried, radius r + ρ_i + pair_margin).
   // F from the topology check with x* = x (throws when the robot is not in its freespace).
-  const double rp = plan_radius();
-  const topology::TopologyResult here = timed_check(rp, pose.x, pose.x);
+  const double rp = plan_radius(ctx_);
+  const topology::TopologyResult here = timed_check(ctx_, rp, pose.x, pose.x);
   const geometry::Region* f = &here.freespace;
   const geometry::RegionSet pair_free = pair_freespace(a.object);
   topology_checks_ += 1;
@@ -1646,7 +1533,7 @@ Executive::Advance Executive::plan_grasp(Activity& a, const Pose& pose) {
   a.target = (reachable != nullptr ? reachable : fallback)->approach;
   if (reachable == nullptr) {
     // Paper §IV: the approach point is not in F; the topology check says why.
-    const topology::TopologyResult res = timed_check(r, pose.x, *a.target);
+    const topology::TopologyResult res = timed_check(ctx_, r, pose.x, *a.target);
     ++topology_checks_;
     if (res.verdict == topology::Verdict::kBlockedByFixed) {
       out.kind = Advance::kInfeasible;
@@ -1682,9 +1569,9 @@ std::pair<const GraspCandidate*, const GraspCandidate*> Executive::choose_side(
     const geometry::RegionSet& pair_free, const geometry::Region& f) const {
   const GraspCandidate* reachable = nullptr;
   const GraspCandidate* fallback = nullptr;
-  const double pair_radius = p_.robot_radius + object_radius(a.object) + p_.grasp.pair_margin;
+  const double pair_radius = p_.robot_radius + object_radius(ctx_, a.object) + p_.grasp.pair_margin;
   auto clear_of_fragments = [&](const GraspCandidate& g) {
-    return known_clearance(map_, g.approach, a.object) >= plan_radius(a) &&
+    return known_clearance(map_, g.approach, a.object) >= plan_radius(ctx_, a) &&
            known_clearance(map_, g.pair_center, a.object) >= pair_radius;
   };
   for (bool clear : {true, false}) {
@@ -1823,15 +1710,6 @@ void Executive::end_current(ActionOutcome outcome, const std::string& reason, do
     mission_.report_infeasible(ltl_->ltl);
   }
   ltl_.reset();
-}
-
-topology::TopologyResult Executive::timed_check(double radius, const Point& x,
-                                                const Point& target) {
-  const ScopedStopwatch sw(times_.topology_s);
-  const topology::TopologyInput in =
-      topology::make_input(map_.workspace(), map_.familiar(), map_.movable(), radius, x, target,
-                           std::nullopt, topology_cache_);
-  return topology::check_topology(in, topology_cache_);
 }
 
 void Executive::finish(TaskStatus status, const std::string& reason, double t) {

@@ -1,0 +1,114 @@
+// The state of one action of the interface layer (paper §IV): what it is (MOVE, GRASP, RELEASE,
+// DISASSEMBLE; LTL or Fix mode), the phase it is in, the knowledge its plan and its
+// diffeomorphism were computed for, its progress monitor and the robust variant's per-action
+// recovery state (docs/executive.md, "Recoveries: causes, units and the policy table"); and
+// Advance, what one tick of an action gives.
+#pragma once
+
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "executive/map_news.h"
+#include "executive/progress_monitor.h"
+#include "geometry/convex.h"
+#include "geometry/polygon.h"
+#include "reactive/kinematics.h"
+#include "symbolic/action.h"
+
+namespace rearm::executive {
+
+using geometry::Point;
+using reactive::Twist;
+
+enum class ActionKind { kMove, kGrasp, kRelease, kDisassemble };
+enum class ActionPhase { kNavigate, kAlign, kDock, kGrip, kWithdraw, kOpen, kBackOff };
+enum class Facing { kNo, kPending, kTurning };  // RobustParams::face
+
+// A straight back-up of the robot alone (RobustParams::escape).
+struct Escape {
+  double heading;   // rad
+  double distance;  // m
+};
+struct ActionState {
+  ActionKind kind = ActionKind::kMove;
+  std::string object;
+  std::string region;
+  bool fix = false;
+  symbolic::Action ltl;  // the automaton's action (LTL actions only)
+  ActionPhase phase = ActionPhase::kNavigate;
+  double t_start = 0;
+  double phase_start = 0;
+  int interruptions = 0;
+  // Planning state: the knowledge the target and topology verdict were computed for.
+  bool planned = false;
+  std::size_t plan_familiar = 0;
+  std::vector<geometry::Disk> plan_movable;
+  std::optional<std::string> plan_carried;
+  std::optional<Point> target;
+  std::string note;          // how navigation ended (reached x*, or stopped early), for the log
+  bool open_sent = false;    // Phase::kOpen: the open command was given
+  double withdrawn = 0;      // Phase::kWithdraw: m reversed so far
+  double withdraw_goal = 0;  // Phase::kWithdraw: m to reverse (withdraw_distance)
+  bool bare = false;         // planned at the bare radius r: the contact margin alone closed x*
+  // Reactive rebuild state.
+  std::uint64_t built_version = 0;
+  bool built = false;
+  Point built_target = Point::Zero();
+  double built_radius = 0;
+  std::uint64_t checked_version = 0;  // the map version the approach point was checked for
+  // RobustParams::defer: the map the diffeomorphism was built for, and the distance of the
+  // news since then from the centre `news_at`, computed for map version `news_version`.
+  MapSnapshot built_map;
+  std::uint64_t news_version = 0;
+  double news = std::numeric_limits<double>::infinity();
+  Point news_at = Point::Zero();
+  Point goal = Point::Zero();  // x* as the controller holds it (snapped onto F_k)
+  ProgressMonitor monitor;
+  // Robust-variant state: the guide's remaining waypoints (x* excluded), recoveries used, the
+  // back-up in progress and the convex pieces forced after a singular Dh.
+  std::vector<Point> guide;
+  int guides = 0;
+  // RobustParams::persist: the least distance of the centre to x* when a guide was planned,
+  // and the guide count at the last renewal of the budget (guides - guide_base are counted).
+  double guide_best = std::numeric_limits<double>::infinity();
+  int guide_base = 0;
+  int back_outs = 0;
+  bool backing = false;
+  double backing_travel = 0;     // m moved (arc length of the centre) in this back-up
+  int backing_dir = -1;          // index into the back-up moves, -1: choose one
+  std::optional<Escape> escape;  // RobustParams::escape: this back-up's line (none: moves)
+  bool convex_all = false;
+  int contact_outs = 0;            // back-ups off ∂F_k when the monitor fired (kContactClearance)
+  bool narrowed = false;           // RobustParams::narrow was tried for this action
+  bool fragments_checked = false;  // RobustParams::fragments was tried for this action
+  // RobustParams::memory: the last guide found a way only through what has been seen of the
+  // unknown obstacles (in F_k alone); RobustParams::fragments looks for objects that close
+  // the way together with them.
+  bool memory_closed = false;
+  bool memory_checked = false;  // closed_by_memory ran its check for this action
+  int replans = 0;              // guides planned again after their next waypoint left F_k
+  bool tracking = false;        // the guide is followed straight (RobustParams::track)
+  Facing facing = Facing::kNo;  // turn toward the law's goal first (RobustParams::face)
+  bool guide_pending = false;   // plan a guide at the next rebuild (after such a back-up)
+  int retargets = 0;            // drop points chosen again after a fragment took one
+  int redrops = 0;              // drop points chosen again after every guide failed
+  std::vector<Point> rejected_drops;
+  // The kDropLevels index the drop point was chosen at (kDropLevels.size(): the clearest
+  // point, no clearance asked); the point is kept while it still meets it.
+  std::size_t drop_level = 0;
+  std::string name() const;
+};
+
+// What advancing the current action by one tick gave.
+struct Advance {
+  enum Kind { kCommand, kDone, kInfeasible, kBlocked, kStuck, kRestart } kind = kCommand;
+  Twist u;
+  std::string reason;
+  std::vector<std::string> blocking;  // B_M, top last (kBlocked)
+  bool center_not_free = false;       // rebuild(): the centre left its freespace
+};
+
+}  // namespace rearm::executive
