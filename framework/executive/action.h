@@ -102,6 +102,12 @@ struct ActionState {
   std::string name() const;
 };
 
+enum class GripperAction { kNone, kClose, kOpen };
+
+// A new action in its first phase at time t, its progress monitor started.
+ActionState make_action(ActionKind kind, std::string object, std::string region, bool fix, double t,
+                        const ProgressParams& progress);
+
 // What advancing the current action by one tick gave.
 struct Advance {
   enum Kind { kCommand, kDone, kInfeasible, kBlocked, kStuck, kRestart } kind = kCommand;
@@ -109,6 +115,17 @@ struct Advance {
   std::string reason;
   std::vector<std::string> blocking;  // B_M, top last (kBlocked)
   bool center_not_free = false;       // rebuild(): the centre left its freespace
+  // kCommand: the gripper action to perform before the step (dock closes, open opens) and the
+  // object to close on; whether u is the reactive law's command.
+  GripperAction gripper = GripperAction::kNone;
+  std::string grip_object;
+  bool law = false;
 };
+
+// An Advance that ends the action stuck, or infeasible, with `reason`.
+Advance stuck(std::string reason);
+Advance infeasible(std::string reason);
+// An Advance that ends this transition (the action goes on at the next one, this tick).
+Advance restart();
 
 }  // namespace rearm::executive

@@ -5,10 +5,15 @@
 
 #include "core/error.h"
 #include "core/stopwatch.h"
+#include "core/text.h"
 #include "geometry/dilation.h"
 #include "reactive/grasp.h"
 
 namespace rearm::executive {
+
+std::string point_text(const Point& p) {
+  return "(" + rearm::fixed(p.x(), 3) + ", " + rearm::fixed(p.y(), 3) + ")";
+}
 
 Moving moving(const Context& c, const ActionState& a, const Pose& pose) {
   const std::optional<std::string> carried = c.map.carried();

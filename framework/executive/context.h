@@ -33,7 +33,11 @@ struct Context {
   ComputeTimes& times;
   RecoveryCounts& recoveries;
   int& topology_checks;
+  const Twist& last_u;  // the last tick's command (RELEASE opens the gripper only after a stop)
 };
+
+// "(x, y)" with millimetres, for reasons and notes.
+std::string point_text(const Point& p);
 
 // What the law moves for an action: the robot (radius plan_radius(a), centre x), or with an
 // object in the gripper the robot–object pair (radius + ρ + pair_margin, centre x_c).

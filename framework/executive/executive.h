@@ -53,6 +53,7 @@
 #include "executive/plant.h"
 #include "executive/progress_monitor.h"
 #include "executive/region.h"
+#include "executive/restores.h"
 #include "perception/semantic_map.h"
 #include "reactive/params.h"
 #include "reactive/reactive_controller.h"
@@ -78,8 +79,6 @@ struct ActionRecord {
   int interruptions = 0;        // Fix mode entries while it was suspended
   std::optional<Point> target;  // its last x*
 };
-
-enum class GripperAction { kNone, kClose, kOpen };
 
 struct Command {
   Twist u;
@@ -134,100 +133,19 @@ class Executive {
   const reactive::ReactiveController& controller() const { return controller_; }
 
  private:
-  using Kind = ActionKind;
-  using Phase = ActionPhase;
-  using Activity = ActionState;
-
-  Activity* current();
-  Activity make(Kind kind, std::string object, std::string region, bool fix, double t) const;
+  ActionState* current();
   bool fetch_ltl(double t);
-  bool restore_next(double t);
-  std::size_t restore_limit() const;  // 2 (objects + 1) restores per task
-  // Whether the map locates the object's centre inside region `id` (exact).
-  bool in_region(const std::string& object, const std::string& id) const;
   // The end of a mission that is accepting (completed, or stuck when a restore failed).
   void finish_accepting(double t);
-  Advance advance(Activity& a, const Pose& pose, double t, double dt);
-  // The phases of advance() (see the header comment).
-  Advance prerequisites_then_navigate(Activity& a, const Pose& pose, double t, double dt);
-  Advance align(Activity& a, const Pose& pose, double t);
-  Advance dock(Activity& a, const Pose& pose, double t, double dt);
-  Advance grip(Activity& a, const Pose& pose, double t);
-  double withdraw_distance(const Activity& a, const Pose& pose) const;
-  Advance withdraw(Activity& a, const Pose& pose, double t, double dt);
-  Advance open(Activity& a, double t);
-  Advance back_off(Activity& a, const Pose& pose, double t, double dt);
-  Advance navigate(Activity& a, const Pose& pose, double t, double dt);
-  std::optional<Advance> narrow(Activity& a, const Pose& pose);
-  std::optional<Advance> redrop(Activity& a, double t);
-  std::optional<Advance> fragment_blockers(Activity& a, double radius, const Point& center);
-  struct Narrowing {
-    std::vector<std::size_t> blocking;  // indices into the map's movable objects
-    std::string reason;
-    double slack = 0;  // m the objects were grown by
-  };
-  std::optional<Narrowing> grown_blockers(const std::vector<geometry::Polygon>& fixed,
-                                          bool familiar_only, double radius, const Point& center,
-                                          const Point& target);
-  std::optional<Advance> fix_mode_for(Activity& a, const std::vector<std::size_t>& blocking,
-                                      std::string reason);
-  void remember_plan(Activity& a) const;
-  Advance plan_disassemble(Activity& a, double radius, const Point& center, double rho);
-  std::optional<Point> drop_point(Activity& a, const geometry::Region& free, double radius,
-                                  const Point& center, double rho);
-  std::optional<Advance> track(Activity& a, const Pose& pose, const Point& nav, double rho,
-                               double dt);
-  std::optional<Advance> face(Activity& a, const Pose& pose, const Point& nav, double t, double dt);
-  Advance plan(Activity& a, const Pose& pose);
-  Advance plan_grasp(Activity& a, const Pose& pose);
-  // Must the diffeomorphism be rebuilt for the map's news (RobustParams::defer)?
-  bool stale(Activity& a, double radius, const Point& center);
-  Advance rebuild(Activity& a, double radius, const Point& center, double t);
-  Advance recover(Activity& a, const Pose& pose, const Point& center, const std::string& why,
-                  double t, double dt);
-  Advance back_out(Activity& a, const Pose& pose, double t, double dt);
-  // RobustParams::escape: the back-up of the robot alone along the clearest straight line from
-  // x (none when no straight move gains clearance), and its next command (none when the next
-  // step would not stay clear or the line is driven).
-  std::optional<Escape> escape_line(const Point& x) const;
-  std::optional<Twist> escape_step(Activity& a, const Pose& pose, double dt);
-  std::pair<const GraspCandidate*, const GraspCandidate*> choose_side(
-      const Activity& a, const std::vector<GraspCandidate>& candidates,
-      const geometry::RegionSet& pair_free, const geometry::Region& f) const;
-  int clearest_pair_move(const Pose& pose, std::span<const Twist> moves, double rho, double here,
-                         double dt) const;
-  // A back-up (back_out); `contact`: one of the monitor's back-ups off ∂F_k (kContactClearance,
-  // bounded by Activity::contact_outs), outside the budget of back-ups out of a dilation.
-  Advance start_back_out(Activity& a, const Pose& pose, const std::string& why, double t, double dt,
-                         bool contact = false);
-  // Plans a guide from `center` to x* in the current mapped space (robust variant); false when
-  // the guide budget is spent or no path helps (`note` says which).
-  bool plan_guide(Activity& a, const Point& center, double t, std::string& note);
-  void replan_guide(Activity& a, const Point& center) const;
-  std::optional<std::vector<Point>> guide_to(Activity& a, const Point& center,
-                                             const GuideParams& gp) const;
-  std::optional<Advance> closed_by_memory(Activity& a, double radius, const Point& center);
-  std::optional<Advance> closing_with_fragments(Activity& a, double radius, const Point& center);
-  std::optional<Advance> drop_short(Activity& a, const Point& at, double t);
-  // RobustParams::drop's drop points serve this action (it has not given up on them after
-  // kMaxDropRetargets); else the paper's target and early stop.
-  bool drop_points(const Activity& a) const;
-  std::vector<geometry::Polygon> seen_dilated(double radius) const;
-  bool early_dock(const Activity& a, const Pose& pose);
-  geometry::RegionSet pair_freespace(const std::string& object);
-  Advance command(Activity& a, const Pose& pose, double rho, double t, double dt);
-  std::optional<Advance> arrive(Activity& a, const Point& center, double rho, double t);
+  // Gripper prerequisites (interface-layer steps, beyond the paper; see the header comment),
+  // then the navigation phase (navigate.h).
+  Advance prerequisites_then_navigate(ActionState& a, const Pose& pose, double t, double dt);
   void end_current(ActionOutcome outcome, const std::string& reason, double t);
   void end_stuck(const std::string& reason, double t);
   // Logs every action on the Fix stack as abandoned (top first) and empties it.
   void abandon_fix(const std::string& why, double t);
   void enter_fix(const std::vector<std::string>& blocking, double t);
   void finish(TaskStatus status, const std::string& reason, double t);
-  // Robust drop rule at the pair centre xc; `slack` (m) tightens both tests.
-  bool drop_clear(const Point& xc, double rho, double slack = 0) const;
-  // The drop point q still meets its level's clearance (Activity::drop_level) and region rule.
-  bool drop_kept(const Activity& a, const Point& q, double rho) const;
-  bool knowledge_changed(const Activity& a) const;
 
   ExecutiveParams p_;
   std::vector<RegionOfInterest> regions_;
@@ -236,9 +154,9 @@ class Executive {
   reactive::ReactiveController controller_;
   topology::TopologyCache topology_cache_;  // Context::topology_cache
   reactive::DilationCache drop_dilations_;  // Context::drop_dilations
-  std::optional<Activity> ltl_;  // the current LTL action (suspended while fix_ is not empty)
-  std::vector<Activity> fix_;    // Fix-mode actions, back() runs first
-  int fix_rounds_ = 0;           // Fix mode entries for the current LTL action
+  std::optional<ActionState> ltl_;  // the current LTL action (suspended while fix_ is not empty)
+  std::vector<ActionState> fix_;    // Fix-mode actions, back() runs first
+  int fix_rounds_ = 0;              // Fix mode entries for the current LTL action
   int fix_entries_ = 0;
   int ltl_done_ = 0;
   int topology_checks_ = 0;
@@ -246,11 +164,7 @@ class Executive {
   Twist last_u_;              // the last step's command (open() lets go only after a stop)
   ComputeTimes times_;
   RecoveryCounts recoveries_;
-  std::map<std::string, std::string> placed_;  // object → region of its last LTL release
-  std::vector<std::pair<std::string, std::string>> displaced_;  // moved by Fix mode since
-  std::size_t restores_ = 0;
-  GripperAction gripper_ = GripperAction::kNone;
-  std::string gripper_object_;
+  Restores restores_;
   std::vector<ActionRecord> log_;
   std::string stuck_;  // the actions that ended stuck and were reported infeasible (paper §III-A)
   TaskStatus status_ = TaskStatus::kRunning;

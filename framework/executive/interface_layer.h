@@ -45,7 +45,7 @@ struct GraspCandidate {
 // keeping those whose docking segment (approach → contact) keeps the robot clear (known
 // clearance >= r, the object itself excepted) and whose pair disk (radius r + ρ_i +
 // pair_margin) is clear of everything known but the object. Membership in the exact
-// freespaces is left to the caller (executive.cpp). Throws rearm::Error for an unknown object
+// freespaces is left to the caller (planning.cpp). Throws rearm::Error for an unknown object
 // or invalid parameters.
 std::vector<GraspCandidate> grasp_candidates(const perception::SemanticMap& map,
                                              std::string_view object, double robot_radius,

@@ -1,0 +1,112 @@
+#include "executive/blockers.h"
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/stopwatch.h"
+#include "core/text.h"
+#include "topology/topology_check.h"
+
+namespace rearm::executive {
+
+// The topology check with `fixed` as the fixed obstacles (the topology cache only for the
+// familiar ones) and every movable object grown by kNarrowSlacks in turn: the first slack whose
+// verdict names objects, or whose grown objects cover the centre (then those whose grown
+// dilation contains it); nullopt when fixed obstacles separate x* or no slack names any.
+std::optional<Narrowing> grown_blockers(const Context& c,
+                                        const std::vector<geometry::Polygon>& fixed,
+                                        bool familiar_only, double radius, const Point& center,
+                                        const Point& target) {
+  for (double slack : kNarrowSlacks) {
+    std::vector<geometry::Disk> grown = c.map.movable();
+    for (geometry::Disk& d : grown) d.radius += slack;
+    Narrowing n{{}, "", slack};
+    try {
+      const ScopedStopwatch sw(c.times.topology_s);
+      const topology::TopologyResult res =
+          familiar_only ? topology::check_topology(
+                              topology::make_input(c.map.workspace(), fixed, grown, radius, center,
+                                                   target, std::nullopt, c.topology_cache),
+                              c.topology_cache)
+                        : topology::check_topology(topology::make_input(
+                              c.map.workspace(), fixed, grown, radius, center, target));
+      ++c.topology_checks;
+      if (res.verdict == topology::Verdict::kBlockedByFixed) return std::nullopt;
+      if (res.verdict != topology::Verdict::kBlockedByObjects) continue;
+      n.blocking = res.blocking;
+      n.reason = res.reason;
+    } catch (const topology::CenterNotFree&) {
+      // Grown objects cover the centre: those within `slack` of the robot's dilation squeeze it.
+      for (std::size_t i = 0; i < grown.size(); ++i) {
+        if ((grown[i].center - center).norm() < grown[i].radius + radius) n.blocking.push_back(i);
+      }
+      n.reason =
+          "the robot's centre lies within " + rearm::fixed(slack, 3) + " m of their dilations";
+    }
+    return n;
+  }
+  return std::nullopt;
+}
+
+// Fix mode (paper §IV) for the objects `blocking` (indices into the map's movable objects) but
+// the action's own object, with the action's recovery counts reset; nullopt when none is left.
+std::optional<Advance> fix_mode_for(const Context& c, ActionState& a,
+                                    const std::vector<std::size_t>& blocking, std::string reason) {
+  Advance out;
+  const auto& ids = c.map.movable_ids();
+  for (std::size_t i : blocking) {
+    if (ids[i] != a.object) out.blocking.push_back(ids[i]);  // GRASP's own object stays
+  }
+  if (out.blocking.empty()) return std::nullopt;
+  out.kind = Advance::kBlocked;
+  out.reason = std::move(reason);
+  a.guides = 0;
+  a.guide_base = 0;
+  a.back_outs = 0;
+  a.contact_outs = 0;
+  return out;
+}
+
+// fragment_blockers' check, whichever recovery asks for it.
+std::optional<Advance> closing_with_fragments(const Context& c, ActionState& a, double radius,
+                                              const Point& center) {
+  std::vector<geometry::Polygon> fixed = c.map.familiar();
+  fixed.insert(fixed.end(), c.map.unknown().begin(), c.map.unknown().end());
+  if (c.p.robust.memory) {
+    // What has been seen of each unknown obstacle (a convex subset of it): the way the guide
+    // found closed may run past obstacles out of sight now.
+    for (const geometry::Polygon& h : c.map.seen()) {
+      if (h.size() >= 3) fixed.push_back(h);
+    }
+  }
+  topology::TopologyResult res;
+  try {
+    const ScopedStopwatch sw(c.times.topology_s);
+    res = topology::check_topology(
+        topology::make_input(c.map.workspace(), fixed, c.map.movable(), radius, center, *a.target));
+    ++c.topology_checks;
+  } catch (const topology::CenterNotFree&) {
+    return std::nullopt;
+  }
+  std::optional<Advance> out;
+  if (res.verdict == topology::Verdict::kBlockedByObjects) {
+    out = fix_mode_for(
+        c, a, res.blocking,
+        "objects close the way to x* together with visible unknown obstacles: " + res.reason);
+  } else if (res.verdict == topology::Verdict::kReachable) {
+    // The exact check finds a way that the mapped space (its polygonal dilations) closes: a gap
+    // within millimetres of the pair's width. Objects that narrow it, as in `narrow`.
+    if (const std::optional<Narrowing> n =
+            grown_blockers(c, fixed, false, radius, center, *a.target)) {
+      out = fix_mode_for(c, a, n->blocking,
+                         "objects narrow the way to x* beside visible unknown obstacles (grown "
+                         "by " +
+                             rearm::fixed(n->slack, 3) + " m): " + n->reason);
+    }
+  }
+  if (out) ++c.recoveries.fragment_fixes;
+  return out;
+}
+
+}  // namespace rearm::executive

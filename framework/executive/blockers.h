@@ -1,0 +1,40 @@
+// Objects that close the way to x* where the plain topology check of Appendix III sees none
+// (docs/executive.md, "Recoveries"): objects that narrow a passage below what the law gets
+// through (grown by kNarrowSlacks), or that close it together with visible unknown fragments;
+// the narrow, fragment-blocker and memory-blocker units send them to Fix mode (paper §IV).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "executive/action.h"
+#include "executive/context.h"
+
+namespace rearm::executive {
+
+struct Narrowing {
+  std::vector<std::size_t> blocking;  // indices into the map's movable objects
+  std::string reason;
+  double slack = 0;  // m the objects were grown by
+};
+// The topology check with `fixed` as the fixed obstacles (the topology cache only for the
+// familiar ones) and every movable object grown by kNarrowSlacks in turn: the first slack whose
+// verdict names objects, or whose grown objects cover the centre (then those whose grown
+// dilation contains it); nullopt when fixed obstacles separate x* or no slack names any.
+std::optional<Narrowing> grown_blockers(const Context& c,
+                                        const std::vector<geometry::Polygon>& fixed,
+                                        bool familiar_only, double radius, const Point& center,
+                                        const Point& target);
+// Fix mode (paper §IV) for the objects `blocking` (indices into the map's movable objects) but
+// the action's own object, with the action's guide and back-up budgets renewed; nullopt when
+// none is left.
+std::optional<Advance> fix_mode_for(const Context& c, ActionState& a,
+                                    const std::vector<std::size_t>& blocking, std::string reason);
+// The topology check again with the visible unknown fragments (and with RobustParams::memory
+// what was seen of them) as fixed obstacles: objects that close the way with them, or narrow
+// it (grown_blockers), go to Fix mode; counted in RecoveryCounts::fragment_fixes.
+std::optional<Advance> closing_with_fragments(const Context& c, ActionState& a, double radius,
+                                              const Point& center);
+
+}  // namespace rearm::executive

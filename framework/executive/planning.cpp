@@ -1,0 +1,218 @@
+#include "executive/planning.h"
+
+#include <algorithm>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/error.h"
+#include "core/stopwatch.h"
+#include "executive/interface_layer.h"
+#include "executive/targets.h"
+#include "topology/topology_check.h"
+
+namespace rearm::executive {
+namespace {
+
+bool same_disks(const std::vector<geometry::Disk>& a, const std::vector<geometry::Disk>& b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    if (a[i].center != b[i].center || a[i].radius != b[i].radius) return false;
+  }
+  return true;
+}
+
+// GRASP's side (paper §IV): the first candidate whose pair centre lies in the pair's freespace
+// and whose approach point lies in F (reachable), and the first with the pair free alone
+// (fallback, for the topology check). Robust variant (RobustParams::fragments): sides whose
+// approach point or pair lies within the dilation of a visible unknown fragment (which the
+// topology check does not model) come last.
+std::pair<const GraspCandidate*, const GraspCandidate*> choose_side(
+    const Context& c, const ActionState& a, const std::vector<GraspCandidate>& candidates,
+    const geometry::RegionSet& pair_free, const geometry::Region& f) {
+  const GraspCandidate* reachable = nullptr;
+  const GraspCandidate* fallback = nullptr;
+  const double pair_radius = c.p.robot_radius + object_radius(c, a.object) + c.p.grasp.pair_margin;
+  auto clear_of_fragments = [&](const GraspCandidate& g) {
+    return known_clearance(c.map, g.approach, a.object) >= plan_radius(c, a) &&
+           known_clearance(c.map, g.pair_center, a.object) >= pair_radius;
+  };
+  for (bool clear : {true, false}) {
+    if (clear && !c.p.robust.fragments) continue;
+    for (const GraspCandidate& g : candidates) {
+      if (!geometry::contains(pair_free, g.pair_center) || (clear && !clear_of_fragments(g))) {
+        continue;
+      }
+      if (fallback == nullptr) fallback = &g;
+      if (geometry::contains(f, g.approach)) {
+        reachable = &g;
+        break;
+      }
+    }
+    if (reachable != nullptr) break;
+  }
+  return {reachable, fallback};
+}
+
+// DISASSEMBLE's x* (paper §V-B): the midpoint of an edge of the pair's freespace F, kept while it
+// stays in F so the target does not jump as the map grows. Robust variant: the nearest point of
+// F where the object can be dropped clear of everything (drop_clear), when there is one.
+Advance plan_disassemble(const Context& c, ActionState& a, double radius, const Point& center,
+                         double rho) {
+  Advance out;
+  const topology::TopologyResult res = timed_check(c, radius, center, center);
+  ++c.topology_checks;
+  if (drop_points(c, a) && (!a.target || !geometry::contains(res.freespace, *a.target) ||
+                            !drop_kept(c, a, *a.target, rho))) {
+    a.target = drop_point(c, a, res.freespace, radius, center, rho);
+  }
+  if (!a.target || !geometry::contains(res.freespace, *a.target)) {
+    a.target = disassemble_target(res.freespace, c.map, a.object, c.regions, radius);
+    if (!a.target) {
+      out.kind = Advance::kStuck;
+      out.reason = "the pair's freespace has no edge to disassemble the object toward";
+      return out;
+    }
+  }
+  remember_plan(c, a);
+  return out;
+}
+
+Advance plan_grasp(const Context& c, ActionState& a, const Pose& pose) {
+  Advance out;
+  const double r = c.p.robot_radius;
+  const std::vector<GraspCandidate> candidates =
+      grasp_candidates(c.map, a.object, r, pose.x, c.p.grasp);
+  if (candidates.empty()) {
+    out.kind = Advance::kInfeasible;
+    out.reason = "no side of " + a.object + " leaves room to dock and to carry it (" +
+                 std::to_string(c.p.grasp.samples) + " directions tried)";
+    return out;
+  }
+  const auto& ids = c.map.movable_ids();
+
+  // Exact freespaces: the robot's (every object an obstacle) and the pair's once gripped (the
+  // object carried, radius r + ρ_i + pair_margin).
+  // F from the topology check with x* = x (throws when the robot is not in its freespace).
+  const double rp = plan_radius(c);
+  const topology::TopologyResult here = timed_check(c, rp, pose.x, pose.x);
+  const geometry::Region* f = &here.freespace;
+  const geometry::RegionSet pair_free = pair_freespace(c, a.object);
+  c.topology_checks += 1;
+  const auto [reachable, fallback] = choose_side(c, a, candidates, pair_free, *f);
+  if (fallback == nullptr) {
+    out.kind = Advance::kInfeasible;
+    out.reason = "no side of " + a.object + " from which the robot–object pair would be free";
+    return out;
+  }
+  a.target = (reachable != nullptr ? reachable : fallback)->approach;
+  if (reachable == nullptr) {
+    // Paper §IV: the approach point is not in F; the topology check says why.
+    const topology::TopologyResult res = timed_check(c, r, pose.x, *a.target);
+    ++c.topology_checks;
+    if (res.verdict == topology::Verdict::kBlockedByFixed) {
+      out.kind = Advance::kInfeasible;
+      out.reason =
+          "fixed obstacles separate the robot from every side of " + a.object + ": " + res.reason;
+      return out;
+    }
+    if (res.verdict == topology::Verdict::kBlockedByObjects) {
+      for (std::size_t i : res.blocking) {
+        if (ids[i] != a.object) out.blocking.push_back(ids[i]);
+      }
+      if (out.blocking.empty()) {
+        out.kind = Advance::kInfeasible;
+        out.reason = "only " + a.object + " itself separates the robot from its free sides";
+        return out;
+      }
+      out.kind = Advance::kBlocked;
+      out.reason = res.reason;
+      return out;
+    }
+  }
+  remember_plan(c, a);
+  return out;
+}
+
+}  // namespace
+
+bool knowledge_changed(const Context& c, const ActionState& a) {
+  return c.map.familiar().size() != a.plan_familiar || c.map.carried() != a.plan_carried ||
+         !same_disks(c.map.movable(), a.plan_movable);
+}
+
+// The action's plan (paper §IV, §V): x* and the topology check's verdict; GRASP and
+// DISASSEMBLE have their own.
+Advance plan(const Context& c, ActionState& a, const Pose& pose) {
+  if (a.kind == ActionKind::kGrasp) return plan_grasp(c, a, pose);
+  Advance out;
+  const std::optional<std::string> carried = c.map.carried();
+  const auto [rho, radius, center] = moving(c, a, pose);
+  if (a.kind == ActionKind::kDisassemble) return plan_disassemble(c, a, radius, center, rho);
+
+  const Point target = region_target(region(c, a.region));
+  const topology::TopologyResult res = timed_check(c, radius, center, target);
+  ++c.topology_checks;
+  a.target = target;
+  if (a.kind == ActionKind::kRelease && c.p.robust.release_point && carried == a.object &&
+      res.verdict != topology::Verdict::kReachable) {
+    // Robust variant: the centroid is cut off; anywhere in ℓ that the pair reaches now, as
+    // clear as ℓ allows.
+    const double inset = c.p.robot_radius + c.p.grasp.pair_margin + 2 * c.p.goal_tolerance;
+    const double enough = 2 * (c.p.robot_radius + max_object_radius(c));
+    if (auto p = release_point(res.freespace, region(c, a.region), c.map, a.object, inset, enough,
+                               kReleaseStep)) {
+      a.target = *p;
+      ++c.recoveries.release_points;
+      remember_plan(c, a);
+      return out;
+    }
+  }
+  switch (res.verdict) {
+    case topology::Verdict::kReachable:
+      remember_plan(c, a);
+      return out;
+    case topology::Verdict::kBlockedByFixed:
+      if (!a.bare && plan_radius(c, a) > c.p.robot_radius) {
+        // Robust variant: a passage only the contact margin closes is taken at the bare radius
+        // (the paper's), for this action only.
+        a.bare = true;
+        return plan(c, a, pose);
+      }
+      out.kind = Advance::kInfeasible;
+      out.reason = "fixed obstacles separate x* = " + point_text(target) + ": " + res.reason;
+      return out;
+    case topology::Verdict::kBlockedByObjects:
+      out.kind = Advance::kBlocked;
+      for (std::size_t i : res.blocking) out.blocking.push_back(c.map.movable_ids()[i]);
+      out.reason = res.reason;
+      return out;
+  }
+  return out;
+}
+
+void remember_plan(const Context& c, ActionState& a) {
+  a.planned = true;
+  a.plan_familiar = c.map.familiar().size();
+  a.plan_movable = c.map.movable();
+  a.plan_carried = c.map.carried();
+}
+
+// The exact freespace of the pair once `object` is gripped (the object carried, radius
+// r + contact margin + ρ_i + pair_margin): F_list of Appendix III.
+geometry::RegionSet pair_freespace(const Context& c, const std::string& object) {
+  const auto& ids = c.map.movable_ids();
+  const auto it = std::find(ids.begin(), ids.end(), object);
+  if (it == ids.end()) throw Error("executive: " + object + " is not a movable obstacle now");
+  const std::size_t index = static_cast<std::size_t>(it - ids.begin());
+  const Point at = c.map.movable()[index].center;
+  const ScopedStopwatch sw(c.times.topology_s);
+  ++c.topology_checks;
+  return topology::freespace_components(
+      topology::make_input(c.map.workspace(), c.map.familiar(), c.map.movable(),
+                           plan_radius(c) + object_radius(c, object) + c.p.grasp.pair_margin, at,
+                           at, index, c.topology_cache),
+      c.topology_cache);
+}
+
+}  // namespace rearm::executive

@@ -1,0 +1,26 @@
+// An action's plan (paper §IV–V, Appendix III): its target x* and the topology check's verdict
+// (reachable, blocked by fixed obstacles: infeasible, blocked by objects: Fix mode), with the
+// knowledge it was computed for, so that the action plans again when the map's topology
+// knowledge changes.
+#pragma once
+
+#include <string>
+
+#include "executive/action.h"
+#include "executive/context.h"
+#include "geometry/polygon.h"
+
+namespace rearm::executive {
+
+// The map's topology knowledge (familiar obstacles, movable objects, the carried one) differs
+// from what the action's plan was computed for.
+bool knowledge_changed(const Context& c, const ActionState& a);
+// x* and the verdict: kCommand when x* is reachable (the plan remembered), else kInfeasible,
+// kBlocked (B_M) or kStuck; throws topology::CenterNotFree when the centre is not free.
+Advance plan(const Context& c, ActionState& a, const Pose& pose);
+void remember_plan(const Context& c, ActionState& a);
+// The exact freespace of the pair once `object` is gripped (the object carried, radius
+// r + contact margin + ρ_i + pair_margin): F_list of Appendix III.
+geometry::RegionSet pair_freespace(const Context& c, const std::string& object);
+
+}  // namespace rearm::executive

@@ -1,0 +1,26 @@
+// Where DISASSEMBLE drops its object (paper §V-B; docs/executive.md, "Recoveries"): the robust
+// variant's drop rule (RobustParams::drop) and drop points, beside the paper's early stop
+// (interface_layer.h, disassembly_done) and target (disassemble_target).
+#pragma once
+
+#include <optional>
+
+#include "executive/action.h"
+#include "executive/context.h"
+#include "geometry/polygon.h"
+
+namespace rearm::executive {
+
+// RobustParams::drop's drop points serve this action (it has not given up on them after
+// kMaxDropRetargets); else the paper's target and early stop.
+bool drop_points(const Context& c, const ActionState& a);
+// Robust drop rule at the pair centre xc; `slack` (m) tightens both tests.
+bool drop_clear(const Context& c, const Point& xc, double rho, double slack = 0);
+// The drop point q still meets its level's clearance (ActionState::drop_level) and region rule.
+bool drop_kept(const Context& c, const ActionState& a, const Point& q, double rho);
+// The drop point in the pair's freespace `free` (or its mapped F_k), setting
+// ActionState::drop_level; nullopt when none is reachable.
+std::optional<Point> drop_point(const Context& c, ActionState& a, const geometry::Region& free,
+                                double radius, const Point& center, double rho);
+
+}  // namespace rearm::executive
