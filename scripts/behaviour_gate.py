@@ -33,17 +33,19 @@ SCENES = ["fig3", "fig4", "fig5", "patrol", "four_objects"]
 WALL_CLOCK = {"wall_time_s", "controller_time_s", "real_time_factor", "compute_time_s",
               "mission_time_s", "topology_time_s", "rebuild_time_s", "control_time_s",
               "cpu_time_s", "planning_time_s", "compute_times"}
-# switch key -> the metrics.json recovery counter that shows its code ran. Switches with no counter
-# of their own name the recovery they shape (track, widen, persist, memory: the guide; escape:
-# the back-up); policies that act in every run (bevel, scan, defer) take the guide's trials.
-EVIDENCE = {
-    "guide": "guides", "convex_fallback": "singular_switches", "back_out": "back_outs",
-    "restore": "restores", "drop": "pocket_drops", "early_release": "early_releases",
-    "withdraw": "withdrawals", "release_point": "release_points", "bevel": "guides",
-    "early_dock": "early_docks", "face": "faces", "narrow": "narrows", "track": "guides",
-    "escape": "back_outs", "widen": "guides", "scan": "guides", "fragments": "fragment_fixes",
-    "memory": "guides", "persist": "guides", "redrop": "redrops", "defer": "guides",
-}
+# switch key -> the metrics.json recovery counter that shows its code ran, read from the switch
+# registry (framework/core/switches.h: key, kind, home, evidence). Switches with no counter of
+# their own name the recovery they shape (track, widen, persist, memory: the guide; escape: the
+# back-up); policies that act in every run (bevel, scan, defer) take the guide's trials.
+def registry_evidence():
+    text = open(os.path.join(ROOT, "framework", "core", "switches.h")).read()
+    rows = re.findall(r'\{"(\w+)", SwitchKind::k\w+, SwitchHome::k\w+, "(\w+)",', text)
+    if not rows:
+        raise RuntimeError("no switch found in framework/core/switches.h")
+    return dict(rows)
+
+
+EVIDENCE = registry_evidence()
 TRIALS_PER_SWITCH = 2
 CANDIDATES_PER_SWITCH = 12  # shortest sweep trials tried per switch before giving up on it
 

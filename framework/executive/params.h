@@ -233,6 +233,24 @@ struct RobustParams {
   int max_back_outs = 4;             // per action
 };
 
+// RobustParams' switches by registry key (core/switches.h): every switch the registry places in
+// the executive, each once (tests/core/switches_test checks both ways).
+struct RobustFlag {
+  const char* key;
+  bool RobustParams::*flag;
+};
+inline constexpr RobustFlag kRobustFlags[] = {
+    {"guide", &RobustParams::guide},       {"convex_fallback", &RobustParams::convex_fallback},
+    {"back_out", &RobustParams::back_out}, {"restore", &RobustParams::restore},
+    {"drop", &RobustParams::drop},         {"early_release", &RobustParams::early_release},
+    {"withdraw", &RobustParams::withdraw}, {"release_point", &RobustParams::release_point},
+    {"bevel", &RobustParams::bevel},       {"early_dock", &RobustParams::early_dock},
+    {"face", &RobustParams::face},         {"narrow", &RobustParams::narrow},
+    {"track", &RobustParams::track},       {"escape", &RobustParams::escape},
+    {"widen", &RobustParams::widen},       {"fragments", &RobustParams::fragments},
+    {"memory", &RobustParams::memory},     {"persist", &RobustParams::persist},
+    {"redrop", &RobustParams::redrop},     {"defer", &RobustParams::defer}};
+
 // How often each recovery of the robust variant fired in a run.
 struct RecoveryCounts {
   int guides = 0;          // guide paths followed after the progress monitor fired

@@ -1,6 +1,5 @@
 #include "experiment/rearm_method.h"
 
-#include <algorithm>
 #include <optional>
 #include <string>
 #include <utility>
@@ -32,8 +31,8 @@ TrialStatus status_of(executive::TaskStatus s) {
 struct Variant {
   std::string name;
   std::string summary;
-  std::string variant;                        // "" keeps the scenario's
-  bool scenario::Controller::*off = nullptr;  // the switch turned off, if any
+  std::string variant;        // "" keeps the scenario's
+  const char* off = nullptr;  // the registry key (core/switches.h) of the switch turned off
 };
 
 class RearmMethod final : public Method {
@@ -45,7 +44,7 @@ class RearmMethod final : public Method {
   TrialOutcome run(const scenario::Scenario& scene, const MethodInput& in) const override {
     scenario::Scenario s = scene;
     if (!v_.variant.empty()) scenario::set_variant(s.controller, v_.variant);
-    if (v_.off != nullptr) s.controller.*v_.off = false;
+    if (v_.off != nullptr) s.controller.switches.set(v_.off, false);
     RunOptions o;
     o.seed = in.seed;
     o.record = false;
@@ -89,12 +88,10 @@ std::vector<std::unique_ptr<Method>> make_rearm_variants() {
   out.push_back(std::make_unique<RearmMethod>(
       Variant{"rearm-paper", "rearm with the paper's choices only (no robust extension)", "paper",
               nullptr}));
-  for (const scenario::RobustSwitch& w : scenario::kRobustSwitches) {
-    std::string key = w.key;
-    key.erase(std::remove(key.begin(), key.end(), '_'), key.end());
+  for (const SwitchInfo& w : kSwitches) {
     out.push_back(std::make_unique<RearmMethod>(
-        Variant{"rearm-no" + key, std::string("rearm, robust variant with ") + w.key + " off",
-                "robust", w.flag}));
+        Variant{ablation_method(w), std::string("rearm, robust variant with ") + w.key + " off",
+                "robust", w.key}));
   }
   return out;
 }

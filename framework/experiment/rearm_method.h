@@ -18,7 +18,8 @@ std::unique_ptr<Method> make_rearm_method();
 // rearm with the scenario's controller variant overridden, for ablations
 // (experiments/sweeps/README.md, "Variants"): "rearm-paper" (the paper's choices, no
 // extension), "rearm-no<switch>" for each switch of
-// scenario::kRobustSwitches, e.g. "rearm-noguide", "rearm-noearlyrelease" (that extension off).
+// the switch registry (core/switches.h), e.g. "rearm-noguide", "rearm-noearlyrelease" (that
+// extension off).
 std::vector<std::unique_ptr<Method>> make_rearm_variants();
 
 // Registers "rearm" and its variants.

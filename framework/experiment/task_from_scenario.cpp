@@ -112,34 +112,18 @@ executive::TaskSpec task_spec(const scenario::Scenario& s) {
   // At most a quarter of the sensing range (the semantic map's bound): a short-range sensor
   // reads at least four times per R of travel.
   t.map_tolerances.scan_spacing =
-      s.controller.scan ? std::min(s.controller.scan_spacing,
-                                   s.robot.sensor_range / perception::kMaxScanSpacingFraction)
-                        : 0;
+      s.controller.switches.on("scan")
+          ? std::min(s.controller.scan_spacing,
+                     s.robot.sensor_range / perception::kMaxScanSpacingFraction)
+          : 0;
   executive::ExecutiveParams& e = t.executive;
   e.robot_radius = s.robot.radius;
   e.diffeo = diffeo_params(s);
   e.nav = nav_params(s);
   e.goal_tolerance = s.controller.goal_tolerance;
-  e.robust.guide = s.controller.guide;
-  e.robust.convex_fallback = s.controller.convex_fallback;
-  e.robust.back_out = s.controller.back_out;
-  e.robust.restore = s.controller.restore;
-  e.robust.drop = s.controller.drop;
-  e.robust.early_release = s.controller.early_release;
-  e.robust.withdraw = s.controller.withdraw;
-  e.robust.release_point = s.controller.release_point;
-  e.robust.bevel = s.controller.bevel;
-  e.robust.early_dock = s.controller.early_dock;
-  e.robust.face = s.controller.face;
-  e.robust.narrow = s.controller.narrow;
-  e.robust.track = s.controller.track;
-  e.robust.escape = s.controller.escape;
-  e.robust.widen = s.controller.widen;
-  e.robust.fragments = s.controller.fragments;
-  e.robust.memory = s.controller.memory;
-  e.robust.persist = s.controller.persist;
-  e.robust.redrop = s.controller.redrop;
-  e.robust.defer = s.controller.defer;
+  for (const executive::RobustFlag& f : executive::kRobustFlags) {
+    e.robust.*f.flag = s.controller.switches.on(f.key);
+  }
   e.robust.rebuild_margin = s.controller.rebuild_margin;
   if (s.controller.variant == "paper") e.robust.contact_margin = 0;
   e.max_ltl_actions = s.simulation.max_actions;

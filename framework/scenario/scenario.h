@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "core/switches.h"
 #include "geometry/convex.h"
 #include "geometry/polygon.h"
 
@@ -63,54 +64,17 @@ struct Controller {
   // (experiments/sweeps/README.md, "Variants"): "robust" (the default) runs the extensions of
   // executive::RobustParams, each switchable below; "paper" runs none (the paper's choices).
   std::string variant = "robust";
-  bool guide = true;            // robust only: guide paths after the progress monitor fires
-  bool convex_fallback = true;  // robust only: convex pieces where h cannot be built
-  bool back_out = true;         // robust only: back up when the centre is not free
-  bool restore = true;          // robust only: re-place objects Fix mode moved off their goal
-  bool drop = true;             // robust only: drop disassembled objects clear of everything
-  bool early_release = true;    // robust only: release once the object is inside its region
-  bool withdraw = true;         // robust only: back the pair out of a narrow place after a grasp
-  bool release_point = true;    // robust only: release where in the region it is clearest
-  bool bevel = true;            // robust only: familiar corners bevelled on the disk's tangent
-  bool early_dock = true;       // robust only: dock from where the robot stalls beside the object
-  bool face = true;             // robust only: turn toward the goal after a back-up
-  bool narrow = true;           // robust only: Fix mode for objects narrowing a failed passage
-  bool track = true;            // robust only: follow guide paths straight, segment by segment
-  bool escape = true;           // robust only: back up along the clearest straight line
-  bool widen = true;            // robust only: each failed guide's successor keeps more clearance
-  bool scan = true;             // robust only: read unknown fragments every scan_spacing
-  bool fragments = true;        // robust only: Fix mode for objects closing x* off with fragments
-  bool memory = true;           // robust only: guide paths avoid what was seen of unknown obstacles
-  bool persist = true;          // robust only: guides that bring the robot closer renew the budget
-  bool redrop = true;           // robust only: an unreachable drop point is chosen again
-  bool defer = true;            // robust only: rebuild once the map's news comes near
+  // robust only: the registry's switches (core/switches.h), all on by default.
+  SwitchSet switches;
   // m: with `defer` on, the margin beyond the dilation radius within which the map's news
   // forces a rebuild (executive::RobustParams::rebuild_margin).
   double rebuild_margin = 1.0;
 };
 
-// The robust variant's switches by key (scenario files; the ablation methods "rearm-no<key>").
-struct RobustSwitch {
-  const char* key;
-  bool Controller::*flag;
-};
-inline constexpr RobustSwitch kRobustSwitches[] = {
-    {"guide", &Controller::guide},         {"convex_fallback", &Controller::convex_fallback},
-    {"back_out", &Controller::back_out},   {"restore", &Controller::restore},
-    {"drop", &Controller::drop},           {"early_release", &Controller::early_release},
-    {"withdraw", &Controller::withdraw},   {"release_point", &Controller::release_point},
-    {"bevel", &Controller::bevel},         {"early_dock", &Controller::early_dock},
-    {"face", &Controller::face},           {"narrow", &Controller::narrow},
-    {"track", &Controller::track},         {"escape", &Controller::escape},
-    {"widen", &Controller::widen},         {"scan", &Controller::scan},
-    {"fragments", &Controller::fragments}, {"memory", &Controller::memory},
-    {"persist", &Controller::persist},     {"redrop", &Controller::redrop},
-    {"defer", &Controller::defer}};
-
 // Sets the variant ("robust" or "paper") and every switch: all on, or all off.
 inline void set_variant(Controller& c, const std::string& variant) {
   c.variant = variant;
-  for (const RobustSwitch& s : kRobustSwitches) c.*s.flag = variant == "robust";
+  c.switches.set_all(variant == "robust");
 }
 
 struct Simulation {

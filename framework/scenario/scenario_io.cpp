@@ -74,39 +74,20 @@ std::vector<Object> read_objects(Reader& r, const YAML::Node& n) {
 }
 
 void read_controller(Reader& r, const YAML::Node& n, Controller& c) {
-  const Fields f(r, n, "controller",
-                 {"p",
-                  "epsilon",
-                  "mu1",
-                  "mu2",
-                  "k_v",
-                  "k_omega",
-                  "goal_tolerance",
-                  "fragment_tolerance",
-                  "scan_spacing",
-                  "variant",
-                  "guide",
-                  "convex_fallback",
-                  "back_out",
-                  "restore",
-                  "drop",
-                  "early_release",
-                  "withdraw",
-                  "release_point",
-                  "bevel",
-                  "early_dock",
-                  "face",
-                  "narrow",
-                  "track",
-                  "escape",
-                  "widen",
-                  "scan",
-                  "fragments",
-                  "memory",
-                  "persist",
-                  "redrop",
-                  "defer",
-                  "rebuild_margin"});
+  // The robust switches' keys come from the registry (core/switches.h).
+  std::vector<const char*> allowed = {"p",
+                                      "epsilon",
+                                      "mu1",
+                                      "mu2",
+                                      "k_v",
+                                      "k_omega",
+                                      "goal_tolerance",
+                                      "fragment_tolerance",
+                                      "scan_spacing",
+                                      "variant"};
+  for (const SwitchInfo& s : kSwitches) allowed.push_back(s.key);
+  allowed.push_back("rebuild_margin");
+  const Fields f(r, n, "controller", std::move(allowed));
   struct Field {
     const char* key;
     double* value;
@@ -131,11 +112,12 @@ void read_controller(Reader& r, const YAML::Node& n, Controller& c) {
     }
   }
   set_variant(c, c.variant);
-  for (const RobustSwitch& s : kRobustSwitches) {
-    if (auto v = f.find(s.key)) {
-      c.*s.flag = r.flag(*v, f.child(s.key));
-      if (c.variant == "paper" && c.*s.flag) {
-        r.fail(f.child(s.key), "the paper variant runs no extension (use variant: robust)");
+  for (std::size_t i = 0; i < kSwitchCount; ++i) {
+    const char* key = kSwitches[i].key;
+    if (auto v = f.find(key)) {
+      c.switches.set(i, r.flag(*v, f.child(key)));
+      if (c.variant == "paper" && c.switches.on(i)) {
+        r.fail(f.child(key), "the paper variant runs no extension (use variant: robust)");
       }
     }
   }
@@ -296,8 +278,8 @@ std::string to_yaml(const Scenario& s) {
       << ", scan_spacing: " << num(c.scan_spacing) << ", rebuild_margin: " << num(c.rebuild_margin)
       << ", variant: " << c.variant;
   if (c.variant == "robust") {
-    for (const RobustSwitch& w : kRobustSwitches) {
-      out << ", " << w.key << ": " << (c.*w.flag ? "true" : "false");
+    for (std::size_t i = 0; i < kSwitchCount; ++i) {
+      out << ", " << kSwitches[i].key << ": " << (c.switches.on(i) ? "true" : "false");
     }
   }
   out << "}\n";

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "core/switches.h"
 #include "scenario/yaml_internal.h"
 
 namespace rearm::scenario {
@@ -139,13 +140,28 @@ void read_instance(Reader& r, const YAML::Node& n, InstanceSpec& spec) {
   }
 }
 
+// "rearm-no*" stands for every switch's ablation method, in the registry's order
+// (core/switches.h), so an ablation sweep covers a switch added later.
+std::vector<std::string> expand_ablation_group(const std::vector<std::string>& named) {
+  std::vector<std::string> out;
+  for (const std::string& m : named) {
+    if (m != kAblationGroup) {
+      out.push_back(m);
+      continue;
+    }
+    for (const SwitchInfo& w : kSwitches) out.push_back(ablation_method(w));
+  }
+  return out;
+}
+
 void read_lists(Reader& r, const Fields& f, SweepFile& s) {
-  s.methods = list_of<std::string>(r, f.require("methods"), "methods",
-                                   [&](const YAML::Node& n, const std::string& p) {
-                                     std::string m = r.text(n, p);
-                                     if (m.empty()) r.fail(p, "empty method name");
-                                     return m;
-                                   });
+  const auto named = list_of<std::string>(r, f.require("methods"), "methods",
+                                          [&](const YAML::Node& n, const std::string& p) {
+                                            std::string m = r.text(n, p);
+                                            if (m.empty()) r.fail(p, "empty method name");
+                                            return m;
+                                          });
+  s.methods = expand_ablation_group(named);
   s.classes = list_of<GoalClass>(r, f.require("classes"), "classes",
                                  [&](const YAML::Node& n, const std::string& p) {
                                    try {

@@ -221,9 +221,8 @@ class Reader {
 // error; required keys are checked when asked for.
 class Fields {
  public:
-  Fields(Reader& reader, const YAML::Node& node, std::string path,
-         std::initializer_list<const char*> allowed)
-      : reader_(reader), path_(std::move(path)), allowed_(allowed) {
+  Fields(Reader& reader, const YAML::Node& node, std::string path, std::vector<const char*> allowed)
+      : reader_(reader), path_(std::move(path)), allowed_(std::move(allowed)) {
     if (!node.IsMap()) {
       reader_.fail(path_.empty() ? kDocumentKey : path_,
                    "expected a mapping with keys " + allowed_list() + ", got " + describe(node));

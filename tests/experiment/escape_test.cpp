@@ -38,7 +38,7 @@ scenario::Scenario apex_scene(bool escape) {
                 Point(4.788271, 5.674359), Point(4.126344, 6.924102), Point(5.376087, 7.586029),
                 Point(5.449621, 7.447193), Point(5.626361, 7.540804), Point(5.459216, 7.856380)}}});
   s.task = "<>move(l2)";
-  s.controller.escape = escape;
+  s.controller.switches.set("escape", escape);
   s.simulation.time_budget = 400;
   return s;
 }

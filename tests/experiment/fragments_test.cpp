@@ -31,7 +31,7 @@ scenario::Scenario gap_scene(bool fragments) {
   s.familiar.push_back({"W", rect(5, 0.01, 5.3, 7)});
   s.unknown.push_back({"U", rect(4.6, 8.1, 5.7, 9.99)});
   s.task = "<>move(l2)";
-  s.controller.fragments = fragments;
+  s.controller.switches.set("fragments", fragments);
   s.simulation.time_budget = 600;
   return s;
 }
