@@ -9,7 +9,6 @@
 
 #include "core/error.h"
 #include "core/text.h"
-#include "ltl/parser.h"
 #include "perception/semantic_map.h"
 #include "symbolic/mission_controller.h"
 
@@ -143,7 +142,7 @@ TaskResult run_task(const TaskSpec& spec, Plant& plant, const TaskOptions& o) {
   mo.translate = spec.translate;
   mo.initial = spec.initial;
   const Clock::time_point mission_start = Clock::now();
-  symbolic::MissionController mission(ltl::parse(spec.formula), mo);
+  symbolic::MissionController mission(spec.formula, mo);
   const double mission_setup = seconds_since(mission_start);
   perception::SemanticMap map(world, perception::Sensor(spec.sensor), spec.map_tolerances);
   Executive exec(spec.executive, spec.regions, mission, map);

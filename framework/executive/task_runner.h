@@ -26,7 +26,7 @@ namespace rearm::executive {
 struct TaskSpec {
   perception::World world;
   std::vector<RegionOfInterest> regions;
-  std::string formula;                      // an LTL formula over move(l), grasp(M), release(M,l)
+  ltl::Formula formula;                     // φ over move(l), grasp(M), release(M,l), parsed
   std::optional<symbolic::Action> initial;  // π0 (Appendix I-B); none: the empty symbol
   perception::SensorParams sensor{3.0};
   perception::ChangeTolerances map_tolerances;
@@ -103,7 +103,7 @@ struct TaskResult {
 };
 
 // Runs the task on `plant` (whose objects are in the world order of spec.world.movable). The
-// formula is parsed and checked against the scenario's names (objects and regions); bad input
+// formula is checked against the world's names (objects and regions); bad input
 // (a malformed formula, unknown names, invalid regions or parameters) throws rearm::Error
 // before the first step. Everything that happens afterwards is a value in the result.
 TaskResult run_task(const TaskSpec& spec, Plant& plant, const TaskOptions& options = {});

@@ -1,72 +1,11 @@
 #include "experiment/task_from_scenario.h"
 
 #include <algorithm>
+#include <utility>
 
-#include "geometry/polygon.h"
-#include "ltl/parser.h"
 #include "perception/semantic_map.h"
-#include "scenario/scenario_io.h"
-#include "symbolic/mission_controller.h"
 
 namespace rearm::experiment {
-
-namespace {
-
-const scenario::NamedPolygon* find_region(const scenario::Scenario& s, const std::string& name) {
-  for (const auto& r : s.regions) {
-    if (r.name == name) return &r;
-  }
-  return nullptr;
-}
-
-// π0 must be true of the scene at the start: the robot inside the region it claims to be in,
-// the object inside the region it claims to have been released in; the gripper starts open.
-void check_initial(const scenario::Scenario& s, const symbolic::Vocabulary& v) {
-  const symbolic::Action a = symbolic::Action::parse(s.initial_predicate);
-  v.check(a);
-  const scenario::NamedPolygon* region = a.region.empty() ? nullptr : find_region(s, a.region);
-  switch (a.kind) {
-    case symbolic::ActionKind::Grasp:
-      throw Error("'" + s.initial_predicate +
-                  "' cannot hold at the start: the robot starts with its gripper open");
-    case symbolic::ActionKind::Move:
-      if (!geometry::contains(region->polygon, s.robot.start)) {
-        throw Error("'" + s.initial_predicate + "' does not hold at the start: the robot's start " +
-                    "is not inside region " + a.region);
-      }
-      return;
-    case symbolic::ActionKind::Release:
-      for (const auto& o : s.objects) {
-        if (o.name == a.object && !geometry::contains(region->polygon, o.disk.center)) {
-          throw Error("'" + s.initial_predicate + "' does not hold at the start: " + a.object +
-                      " does not start inside region " + a.region);
-        }
-      }
-      return;
-  }
-}
-
-}  // namespace
-
-void check_task(const scenario::Scenario& s) {
-  symbolic::Vocabulary v;
-  for (const auto& o : s.objects) v.objects.push_back(o.name);
-  for (const auto& r : s.regions) v.regions.push_back(r.name);
-  const std::string where = s.source.empty() ? s.name : s.source;
-  try {
-    symbolic::check_mission_formula(ltl::parse(s.task), v);
-  } catch (const scenario::ScenarioError&) {
-    throw;
-  } catch (const Error& e) {
-    throw scenario::ScenarioError(where, "task", e.what());
-  }
-  if (s.initial_predicate.empty()) return;
-  try {
-    check_initial(s, v);
-  } catch (const Error& e) {
-    throw scenario::ScenarioError(where, "initial_predicate", e.what());
-  }
-}
 
 perception::World world_of(const scenario::Scenario& s) {
   perception::World w;
@@ -101,12 +40,12 @@ executive::Pose start_pose(const scenario::Scenario& s) {
 }
 
 executive::TaskSpec task_spec(const scenario::Scenario& s) {
-  check_task(s);
+  ScenarioTask task = parse_task(s);
   executive::TaskSpec t;
   t.world = world_of(s);
   for (const auto& r : s.regions) t.regions.push_back({r.name, r.polygon});
-  t.formula = s.task;
-  if (!s.initial_predicate.empty()) t.initial = symbolic::Action::parse(s.initial_predicate);
+  t.formula = std::move(task.formula);
+  t.initial = std::move(task.initial);
   t.sensor.range = s.robot.sensor_range;
   t.map_tolerances.fragment = s.controller.fragment_tolerance;
   // At most a quarter of the sensing range (the semantic map's bound): a short-range sensor

@@ -1,5 +1,7 @@
 #include "support/task_scenes.h"
 
+#include "ltl/parser.h"
+
 namespace rearm::test_support {
 
 using geometry::Point;
@@ -27,7 +29,7 @@ executive::TaskSpec fig3_task() {
   t.world.familiar = {{"P1", rect(4.7, 0, 5.3, 2.5)}, {"P2", rect(4.7, 3.5, 5.3, 6)}};
   t.world.movable = {{"M1", geometry::Disk{Point(5.0, 3.0), 0.25}}};
   t.regions = {{"l1", rect(8, 2.5, 9, 3.5)}};
-  t.formula = "<>move(l1)";
+  t.formula = ltl::parse("<>move(l1)");
   return t;
 }
 reactive::Pose fig3_start() { return {Point(1.5, 3.0), 0.0}; }
@@ -47,7 +49,7 @@ executive::TaskSpec fig4_task() {
   t.regions = {{"l1", rect(9.5, 1.0, 10.5, 2.0)},
                {"l2", rect(9.5, 6.0, 10.5, 7.0)},
                {"l3", rect(1.0, 6.0, 2.0, 7.0)}};
-  t.formula = "<>(move(l1) && <>(move(l2) && <>(grasp(M1) && <>release(M1,l3))))";
+  t.formula = ltl::parse("<>(move(l1) && <>(move(l2) && <>(grasp(M1) && <>release(M1,l3))))");
   return t;
 }
 reactive::Pose fig4_start() { return {Point(1.5, 1.5), 0.0}; }
@@ -57,7 +59,7 @@ executive::TaskSpec walled_in_task() {
   t.world.familiar = {{"P1", Polygon{{Point(9.0, 0), Point(9.3, 0), Point(9.3, 2.7),
                                       Point(12.0, 2.7), Point(12.0, 3.0), Point(9.0, 3.0)}}}};
   t.regions = {{"l1", rect(10.2, 0.8, 11.2, 1.8)}};
-  t.formula = "<>move(l1)";
+  t.formula = ltl::parse("<>move(l1)");
   return t;
 }
 reactive::Pose walled_in_start() { return {Point(2.0, 4.5), 0.0}; }
@@ -68,7 +70,8 @@ executive::TaskSpec swap_task() {
   t.world.movable = {{"M1", geometry::Disk{Point(2.0, 2.0), 0.25}},
                      {"M2", geometry::Disk{Point(8.0, 6.0), 0.25}}};
   t.regions = {{"l1", rect(1.4, 1.4, 2.6, 2.6)}, {"l2", rect(7.4, 5.4, 8.6, 6.6)}};
-  t.formula = "<>(grasp(M1) && <>(release(M1,l2) && <>(grasp(M2) && <>release(M2,l1))))";
+  t.formula =
+      ltl::parse("<>(grasp(M1) && <>(release(M1,l2) && <>(grasp(M2) && <>release(M2,l1))))");
   return t;
 }
 reactive::Pose swap_start() { return {Point(4.0, 1.0), 0.0}; }
