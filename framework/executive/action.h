@@ -13,6 +13,7 @@
 
 #include "executive/map_news.h"
 #include "executive/progress_monitor.h"
+#include "executive/recovery_state.h"
 #include "geometry/convex.h"
 #include "geometry/polygon.h"
 #include "reactive/kinematics.h"
@@ -25,13 +26,7 @@ using reactive::Twist;
 
 enum class ActionKind { kMove, kGrasp, kRelease, kDisassemble };
 enum class ActionPhase { kNavigate, kAlign, kDock, kGrip, kWithdraw, kOpen, kBackOff };
-enum class Facing { kNo, kPending, kTurning };  // RobustParams::face
 
-// A straight back-up of the robot alone (RobustParams::escape).
-struct Escape {
-  double heading;   // rad
-  double distance;  // m
-};
 struct ActionState {
   ActionKind kind = ActionKind::kMove;
   std::string object;
@@ -67,38 +62,11 @@ struct ActionState {
   Point news_at = Point::Zero();
   Point goal = Point::Zero();  // x* as the controller holds it (snapped onto F_k)
   ProgressMonitor monitor;
-  // Robust-variant state: the guide's remaining waypoints (x* excluded), recoveries used, the
-  // back-up in progress and the convex pieces forced after a singular Dh.
-  std::vector<Point> guide;
-  int guides = 0;
-  // RobustParams::persist: the least distance of the centre to x* when a guide was planned,
-  // and the guide count at the last renewal of the budget (guides - guide_base are counted).
-  double guide_best = std::numeric_limits<double>::infinity();
-  int guide_base = 0;
-  int back_outs = 0;
-  bool backing = false;
-  double backing_travel = 0;     // m moved (arc length of the centre) in this back-up
-  int backing_dir = -1;          // index into the back-up moves, -1: choose one
-  std::optional<Escape> escape;  // RobustParams::escape: this back-up's line (none: moves)
-  bool convex_all = false;
-  int contact_outs = 0;            // back-ups off ∂F_k when the monitor fired (kContactClearance)
-  bool narrowed = false;           // RobustParams::narrow was tried for this action
-  bool fragments_checked = false;  // RobustParams::fragments was tried for this action
-  // RobustParams::memory: the last guide found a way only through what has been seen of the
-  // unknown obstacles (in F_k alone); RobustParams::fragments looks for objects that close
-  // the way together with them.
-  bool memory_closed = false;
-  bool memory_checked = false;  // closed_by_memory ran its check for this action
-  int replans = 0;              // guides planned again after their next waypoint left F_k
-  bool tracking = false;        // the guide is followed straight (RobustParams::track)
-  Facing facing = Facing::kNo;  // turn toward the law's goal first (RobustParams::face)
-  bool guide_pending = false;   // plan a guide at the next rebuild (after such a back-up)
-  int retargets = 0;            // drop points chosen again after a fragment took one
-  int redrops = 0;              // drop points chosen again after every guide failed
-  std::vector<Point> rejected_drops;
-  // The kDropLevels index the drop point was chosen at (kDropLevels.size(): the clearest
-  // point, no clearance asked); the point is kept while it still meets it.
-  std::size_t drop_level = 0;
+  // The robust variant's recovery units, one slice each (executive/recovery_state.h).
+  GuideState guide;
+  BackUpState back_up;
+  DropState drop;
+  OnceState once;
   std::string name() const;
 };
 

@@ -74,19 +74,19 @@ std::optional<Escape> escape_line(const Context& c, const Point& x) {
 // for the escape's distance; each step keeps the robot no closer to anything known than r (or
 // than it is now).
 std::optional<Twist> escape_step(const Context& c, ActionState& a, const Pose& pose, double dt) {
-  const Escape& e = *a.escape;
+  const Escape& e = *a.back_up.escape;
   const double ahead = reactive::wrap_angle(e.heading - pose.psi);
   const double sign = std::abs(ahead) <= std::numbers::pi / 2 ? 1.0 : -1.0;
   const double error = sign > 0 ? ahead : reactive::wrap_angle(ahead + std::numbers::pi);
   const double omega = std::clamp(kTrackTurnGain * error, -c.p.nav.omega_max, c.p.nav.omega_max);
   if (std::abs(error) > kFaceTolerance) return Twist{0, omega};
-  if (a.backing_travel >= e.distance) return std::nullopt;
-  const double v = sign * std::min(c.p.backoff_speed, (e.distance - a.backing_travel) / dt);
+  if (a.back_up.travel >= e.distance) return std::nullopt;
+  const double v = sign * std::min(c.p.backoff_speed, (e.distance - a.back_up.travel) / dt);
   const Twist u{v, omega};
   const Pose next = reactive::unicycle_step(pose, u, dt);
   const double floor = std::min(c.p.robot_radius, known_clearance(c.map, pose.x));
   if (known_clearance(c.map, next.x) < floor) return std::nullopt;
-  a.backing_travel += std::abs(v) * dt;
+  a.back_up.travel += std::abs(v) * dt;
   return u;
 }
 
@@ -94,13 +94,10 @@ std::optional<Twist> escape_step(const Context& c, ActionState& a, const Pose& p
 
 Advance begin_back_up(const Context& c, ActionState& a, const Pose& pose, double t, double dt,
                       bool contact) {
-  if (!contact) ++a.back_outs;
+  if (!contact) ++a.back_up.count;
   ++c.recoveries.back_outs;
-  a.backing = true;
-  a.backing_travel = 0;
-  a.backing_dir = -1;
-  a.escape.reset();
-  if (c.p.robust.escape && !c.map.carried()) a.escape = escape_line(c, pose.x);
+  a.back_up.begin();
+  if (c.p.robust.escape && !c.map.carried()) a.back_up.escape = escape_line(c, pose.x);
   return back_out(c, a, pose, t, dt);
 }
 
@@ -114,22 +111,22 @@ Advance back_out(const Context& c, ActionState& a, const Pose& pose, double t, d
   const std::optional<std::string> carried = c.map.carried();
   const double rho = carried ? object_radius(c, *carried) : 0;
   auto finish_backing = [&] {
-    a.backing = false;
-    a.facing = c.p.robust.face ? Facing::kPending : Facing::kNo;
+    a.back_up.active = false;
+    a.back_up.facing = c.p.robust.face ? Facing::kPending : Facing::kNo;
     a.planned = false;
     a.built = false;
     a.monitor.reset(t);
     out.kind = Advance::kRestart;
     return out;
   };
-  if (a.backing_travel >= c.p.robust.back_out_step) return finish_backing();
-  if (a.escape) {
+  if (a.back_up.travel >= c.p.robust.back_out_step) return finish_backing();
+  if (a.back_up.escape) {
     const std::optional<Twist> u = escape_step(c, a, pose, dt);
     if (!u) return finish_backing();
     out.u = *u;
     return out;
   }
-  const double v = std::min(c.p.backoff_speed, (c.p.robust.back_out_step - a.backing_travel) / dt);
+  const double v = std::min(c.p.backoff_speed, (c.p.robust.back_out_step - a.back_up.travel) / dt);
   const double w = carried ? std::min(c.p.nav.omega_max, v / rho) : 0;
   const Twist moves[] = {{-v, 0},     {v, 0},       {0, w},     {0, -w},
                          {-v, w / 2}, {-v, -w / 2}, {v, w / 2}, {v, -w / 2}};
@@ -140,32 +137,32 @@ Advance back_out(const Context& c, ActionState& a, const Pose& pose, double t, d
     return carried ? reactive::pair_center(q.x, q.psi, rho) : q.x;
   };
   const double here = known_clearance(c.map, centre(pose), carried.value_or(""));
-  if (carried && c.p.robust.escape && a.back_outs > kPairLookaheadAfter && a.backing_dir < 0 &&
-      a.backing_travel == 0) {
-    a.backing_dir = clearest_pair_move(c, pose, std::span(moves, count), rho, here, dt);
+  if (carried && c.p.robust.escape && a.back_up.count > kPairLookaheadAfter && a.back_up.dir < 0 &&
+      a.back_up.travel == 0) {
+    a.back_up.dir = clearest_pair_move(c, pose, std::span(moves, count), rho, here, dt);
   }
   auto usable = [&](int k, bool away) {
     const Pose next = reactive::unicycle_step(pose, moves[k], dt);
     if (!step_clear(c, pose, next)) return false;
     return !away || known_clearance(c.map, centre(next), carried.value_or("")) > here;
   };
-  if (a.backing_dir < 0 || !usable(a.backing_dir, false)) {
-    a.backing_dir = -1;
+  if (a.back_up.dir < 0 || !usable(a.back_up.dir, false)) {
+    a.back_up.dir = -1;
     // A move away from what the centre touches first; any clear move otherwise.
     for (bool away : {true, false}) {
-      for (int k = 0; k < count && a.backing_dir < 0; ++k) {
-        if ((moves[k].v != 0 || moves[k].omega != 0) && usable(k, away)) a.backing_dir = k;
+      for (int k = 0; k < count && a.back_up.dir < 0; ++k) {
+        if ((moves[k].v != 0 || moves[k].omega != 0) && usable(k, away)) a.back_up.dir = k;
       }
     }
   }
-  if (a.backing_dir < 0) {
-    if (a.backing_travel > 0) return finish_backing();
+  if (a.back_up.dir < 0) {
+    if (a.back_up.travel > 0) return finish_backing();
     out.kind = Advance::kStuck;
     out.reason = "no room to back up from " + point_text(pose.x);
     return out;
   }
-  out.u = moves[a.backing_dir];
-  a.backing_travel += (std::abs(out.u.v) + rho * std::abs(out.u.omega)) * dt;
+  out.u = moves[a.back_up.dir];
+  a.back_up.travel += (std::abs(out.u.v) + rho * std::abs(out.u.omega)) * dt;
   return out;
 }
 

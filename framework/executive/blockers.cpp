@@ -61,10 +61,8 @@ std::optional<Advance> fix_mode_for(const Context& c, ActionState& a,
   if (out.blocking.empty()) return std::nullopt;
   out.kind = Advance::kBlocked;
   out.reason = std::move(reason);
-  a.guides = 0;
-  a.guide_base = 0;
-  a.back_outs = 0;
-  a.contact_outs = 0;
+  a.guide.renew_budget();
+  a.back_up.renew_budget();
   return out;
 }
 

@@ -44,7 +44,7 @@ std::optional<std::vector<Point>> guide_to(const Context& c, ActionState& a, con
     }
   }
   std::optional<std::vector<Point>> path = guide_path(free, center, a.goal, gp);
-  if (closed && path) a.memory_closed = true;
+  if (closed && path) a.guide.memory_closed = true;
   return path;
 }
 
@@ -56,32 +56,33 @@ bool plan_guide(const Context& c, ActionState& a, const Point& center, double t,
   // kPersistProgress closer to x* than at every earlier guide of the action (the guides counted
   // for widen go on).
   const double to_goal = (center - a.goal).norm();
-  if (c.p.robust.persist && to_goal <= a.guide_best - kPersistProgress) a.guide_base = a.guides;
-  a.guide_best = std::min(a.guide_best, to_goal);
-  if (a.guides - a.guide_base >= c.p.guide.max_recoveries) {
-    note = " (after " + std::to_string(a.guides) + " guide paths)";
+  if (c.p.robust.persist && to_goal <= a.guide.best - kPersistProgress)
+    a.guide.base = a.guide.planned;
+  a.guide.best = std::min(a.guide.best, to_goal);
+  if (a.guide.planned - a.guide.base >= c.p.guide.max_recoveries) {
+    note = " (after " + std::to_string(a.guide.planned) + " guide paths)";
     return false;
   }
   // Robust variant (RobustParams::widen): each guide after a failed one keeps kGuideWiden more
   // clearance than the last, so that it leaves the passage where the pair stalled for a wider
   // way round when there is one (the plain path otherwise).
   std::optional<std::vector<Point>> path;
-  if (c.p.robust.widen && a.guides > 0) {
+  if (c.p.robust.widen && a.guide.planned > 0) {
     GuideParams wide = c.p.guide;
-    wide.avoid = kGuideWiden * a.guides;
+    wide.avoid = kGuideWiden * a.guide.planned;
     path = guide_to(c, a, center, wide);
   }
   if (!path) path = guide_to(c, a, center, c.p.guide);
   if (!path || path->size() < 2) {
-    if (path && c.p.robust.track && !a.tracking) {
+    if (path && c.p.robust.track && !a.guide.tracking) {
       // x* in sight (the segment to it keeps the guide's clearance in F_k), yet the law
       // stalled: drive straight at it (RobustParams::track), the pair centre as a fully
       // actuated point, which may back the robot in where the law of [7] would have to turn the
       // pair around.
-      a.guide.clear();
-      a.tracking = true;
-      a.facing = Facing::kNo;
-      ++a.guides;
+      a.guide.path.clear();
+      a.guide.tracking = true;
+      a.back_up.facing = Facing::kNo;
+      ++a.guide.planned;
       ++c.recoveries.guides;
       a.monitor.reset(t);
       return true;
@@ -89,10 +90,10 @@ bool plan_guide(const Context& c, ActionState& a, const Point& center, double t,
     note = path ? " (x* is in sight: no guide helps)" : " (no guide path in the known freespace)";
     return false;
   }
-  a.guide.assign(path->begin(), path->end() - 1);
-  a.tracking = c.p.robust.track;
-  a.facing = c.p.robust.face && !a.tracking ? Facing::kPending : Facing::kNo;
-  ++a.guides;
+  a.guide.path.assign(path->begin(), path->end() - 1);
+  a.guide.tracking = c.p.robust.track;
+  a.back_up.facing = c.p.robust.face && !a.guide.tracking ? Facing::kPending : Facing::kNo;
+  ++a.guide.planned;
   ++c.recoveries.guides;
   a.monitor.reset(t);
   return true;
@@ -101,7 +102,7 @@ bool plan_guide(const Context& c, ActionState& a, const Point& center, double t,
 // The guide in use planned again from `center` (empty when the raster finds no path).
 void replan_guide(const Context& c, ActionState& a, const Point& center) {
   const auto path = guide_to(c, a, center, c.p.guide);
-  a.guide = path ? std::vector<Point>(path->begin(), path->end() - 1) : std::vector<Point>{};
+  a.guide.path = path ? std::vector<Point>(path->begin(), path->end() - 1) : std::vector<Point>{};
 }
 
 }  // namespace rearm::executive

@@ -50,7 +50,7 @@ Advance rebuild(const Context& c, ActionState& a, const Pose& pose, double radiu
                 const Point& center, double t, double dt) {
   Advance out;
   const Point target = *a.target;
-  c.controller.set_convexify_all(a.convex_all);
+  c.controller.set_convexify_all(a.once.convex_all);
   reactive::RebuildResult rr;
   {
     const ScopedStopwatch sw(c.times.rebuild_s);
@@ -87,7 +87,7 @@ Advance rebuild(const Context& c, ActionState& a, const Pose& pose, double radiu
   }
   if (a.built && (a.built_target - target).norm() > c.p.progress.progress_step) {
     a.monitor.reset(t);
-    a.guide_best = std::numeric_limits<double>::infinity();  // distances to another x*
+    a.guide.best = std::numeric_limits<double>::infinity();  // distances to another x*
   }
   a.built = true;
   a.built_version = c.map.version();
@@ -96,14 +96,15 @@ Advance rebuild(const Context& c, ActionState& a, const Pose& pose, double radiu
   a.built_target = target;
   a.built_radius = radius;
   a.goal = c.controller.goal();
-  if (a.guide_pending) {
-    a.guide_pending = false;
+  if (a.guide.pending) {
+    a.guide.pending = false;
     std::string note;
     plan_guide(c, a, center, t, note);
   }
   // A guide in use stays while its next waypoint is still free (a path costs tens of ms; the
   // map changes every few ticks as fragments grow), else it is planned again.
-  if (!a.guide.empty() && !reactive::in_freespace(c.controller.mapped(), a.guide.front())) {
+  if (!a.guide.path.empty() &&
+      !reactive::in_freespace(c.controller.mapped(), a.guide.path.front())) {
     replan_guide(c, a, center);
   }
   return out;
@@ -115,7 +116,7 @@ std::optional<Advance> arrive(const Context& c, ActionState& a, const Point& cen
                               double t) {
   Advance out;
   const double tol = a.kind == ActionKind::kGrasp ? c.p.grasp_goal_tolerance : c.p.goal_tolerance;
-  bool reached = a.guide.empty() && (center - a.goal).norm() <= tol;
+  bool reached = a.guide.path.empty() && (center - a.goal).norm() <= tol;
   std::string why;  // written only once reached (formatting every tick cost 3% of a trial)
   auto early = [&] {
     return drop_points(c, a) ? drop_clear(c, center, rho)
@@ -159,12 +160,12 @@ std::optional<Advance> face(const Context& c, ActionState& a, const Pose& pose, 
       reactive::aligned(pose.psi, pose.x, nav, kFaceTolerance) ||
       (c.map.carried() && !step_clear(c, pose, reactive::unicycle_step(pose, out.u, dt))) ||
       !centre_kept(c, pose, reactive::unicycle_step(pose, out.u, dt))) {
-    a.facing = Facing::kNo;
+    a.back_up.facing = Facing::kNo;
     a.monitor.reset(t);
     return std::nullopt;
   }
-  if (a.facing == Facing::kPending) ++c.recoveries.faces;
-  a.facing = Facing::kTurning;
+  if (a.back_up.facing == Facing::kPending) ++c.recoveries.faces;
+  a.back_up.facing = Facing::kTurning;
   return out;
 }
 
@@ -180,7 +181,7 @@ std::optional<Advance> track(const Context& c, ActionState& a, const Pose& pose,
   if (reactive::in_freespace(c.controller.mapped(), next_center) && step_clear(c, pose, next)) {
     return out;
   }
-  a.tracking = false;
+  a.guide.tracking = false;
   return std::nullopt;
 }
 
@@ -212,7 +213,7 @@ Advance command(const Context& c, ActionState& a, const Pose& pose, double rho, 
 
 Advance navigate(const Context& c, ActionState& a, const Pose& pose, double t, double dt) {
   const auto [rho, radius, center] = moving(c, a, pose);
-  if (a.backing) return back_out(c, a, pose, t, dt);
+  if (a.back_up.active) return back_out(c, a, pose, t, dt);
 
   // A grasp approach point chosen earlier may have lost its clearance to a newly seen unknown
   // fragment (the topology knowledge is unchanged then).
@@ -239,38 +240,38 @@ Advance navigate(const Context& c, ActionState& a, const Pose& pose, double t, d
     if (b.kind != Advance::kCommand) return b;
   }
   // The guide's waypoints (robust variant): passed ones are dropped, the next is the law's goal.
-  const double reach = a.tracking ? kTrackReach : c.p.guide.reach;
-  while (!a.guide.empty() && (center - a.guide.front()).norm() <= reach) {
-    a.guide.erase(a.guide.begin());
+  const double reach = a.guide.tracking ? kTrackReach : c.p.guide.reach;
+  while (!a.guide.path.empty() && (center - a.guide.path.front()).norm() <= reach) {
+    a.guide.path.erase(a.guide.path.begin());
     a.monitor.reset(t);
   }
-  Point nav = a.guide.empty() ? a.goal : a.guide.front();
+  Point nav = a.guide.path.empty() ? a.goal : a.guide.path.front();
   if (c.controller.goal() != nav && !c.controller.retarget(nav)) {
     // The next waypoint has left F_k since the guide was planned (the map changed under it): the
     // guide is planned again from here (kMaxGuideReplans per action) rather than dropped for a
     // straight run at x*.
-    if (a.replans < kMaxGuideReplans) {
-      ++a.replans;
+    if (a.guide.replans < kMaxGuideReplans) {
+      ++a.guide.replans;
       replan_guide(c, a, center);
     } else {
-      a.guide.clear();
+      a.guide.path.clear();
     }
-    nav = a.guide.empty() ? a.goal : a.guide.front();
+    nav = a.guide.path.empty() ? a.goal : a.guide.path.front();
     if (!c.controller.retarget(nav)) {
-      a.guide.clear();
+      a.guide.path.clear();
       nav = a.goal;
       c.controller.retarget(nav);
     }
   }
-  if (a.memory_closed) {
+  if (a.guide.memory_closed) {
     // The cause "closed by memory": the last guide found a way only through what has been seen
     // of the unknown obstacles (RobustParams::memory).
-    a.memory_closed = false;
+    a.guide.memory_closed = false;
     Trigger memory{Cause::kClosedByMemory, "", radius, center};
     if (std::optional<Advance> f = recover(c, a, pose, memory, Tick{t, dt})) return *f;
   }
   if (std::optional<Advance> done = arrive(c, a, center, rho, t)) return *done;
-  if (a.facing != Facing::kNo) {
+  if (a.back_up.facing != Facing::kNo) {
     if (std::optional<Advance> f = face(c, a, pose, c.controller.goal(), t, dt)) return *f;
   }
   if (auto stuck =
@@ -280,7 +281,7 @@ Advance navigate(const Context& c, ActionState& a, const Pose& pose, double t, d
     if (std::optional<Advance> r = recover(c, a, pose, stalled, Tick{t, dt})) return *r;
     return executive::stuck(stalled.reason);
   }
-  if (a.tracking) {
+  if (a.guide.tracking) {
     if (std::optional<Advance> step = track(c, a, pose, nav, rho, dt)) return *step;
   }
   return command(c, a, pose, rho, t, dt);

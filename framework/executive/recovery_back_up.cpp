@@ -11,9 +11,9 @@ namespace rearm::executive::units {
 
 std::optional<Advance> back_up(const Context& c, ActionState& a, const Pose& pose, Trigger& trigger,
                                Tick tick) {
-  if (a.back_outs >= c.p.robust.max_back_outs) {
+  if (a.back_up.count >= c.p.robust.max_back_outs) {
     Trigger spent{Cause::kBackUpsSpent,
-                  trigger.reason + " (after " + std::to_string(a.back_outs) + " back-ups)",
+                  trigger.reason + " (after " + std::to_string(a.back_up.count) + " back-ups)",
                   trigger.radius, pose.x};
     if (std::optional<Advance> next = recover(c, a, pose, spent, tick)) return next;
     return stuck(spent.reason);

@@ -11,17 +11,17 @@ namespace rearm::executive::units {
 
 std::optional<Advance> contact_back_up(const Context& c, ActionState& a, const Pose& pose,
                                        Trigger& trigger, Tick tick) {
-  if (!(a.contact_outs < c.p.robust.max_back_outs &&
+  if (!(a.back_up.contact_outs < c.p.robust.max_back_outs &&
         geometry::nearest_on_boundary(c.controller.mapped().freespace, trigger.center).distance <
             kContactClearance)) {
     return std::nullopt;
   }
-  ++a.contact_outs;
-  a.guide.clear();
-  a.guide_pending = true;
+  ++a.back_up.contact_outs;
+  a.guide.path.clear();
+  a.guide.pending = true;
   Advance b = begin_back_up(c, a, pose, tick.t, tick.dt, /*contact=*/true);
   if (b.kind != Advance::kStuck) return b;
-  a.guide_pending = false;
+  a.guide.pending = false;
   return std::nullopt;
 }
 

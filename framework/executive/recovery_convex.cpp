@@ -10,9 +10,9 @@ namespace rearm::executive::units {
 
 std::optional<Advance> convex(const Context& c, ActionState& a, const Pose& pose, Trigger& trigger,
                               Tick /*tick*/) {
-  if (a.convex_all) return std::nullopt;
+  if (a.once.convex_all) return std::nullopt;
   if (trigger.model_point_outside && !centre_inside(c, a, pose)) return std::nullopt;
-  a.convex_all = true;
+  a.once.convex_all = true;
   a.built = false;
   ++c.recoveries.singular;
   return restart();

@@ -11,8 +11,8 @@ namespace rearm::executive::units {
 
 std::optional<Advance> fragment_blockers(const Context& c, ActionState& a, const Pose& /*pose*/,
                                          Trigger& trigger, Tick /*tick*/) {
-  if (a.fragments_checked || !a.target) return std::nullopt;
-  a.fragments_checked = true;
+  if (a.once.fragments || !a.target) return std::nullopt;
+  a.once.fragments = true;
   return closing_with_fragments(c, a, trigger.radius, trigger.center);
 }
 

@@ -12,8 +12,8 @@ namespace rearm::executive::units {
 
 std::optional<Advance> memory_blockers(const Context& c, ActionState& a, const Pose& /*pose*/,
                                        Trigger& trigger, Tick /*tick*/) {
-  if (a.memory_checked || !a.target) return std::nullopt;
-  a.memory_checked = true;
+  if (a.once.memory || !a.target) return std::nullopt;
+  a.once.memory = true;
   return closing_with_fragments(c, a, trigger.radius, trigger.center);
 }
 

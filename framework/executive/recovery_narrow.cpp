@@ -11,8 +11,8 @@ namespace rearm::executive::units {
 
 std::optional<Advance> narrow(const Context& c, ActionState& a, const Pose& pose,
                               Trigger& /*trigger*/, Tick /*tick*/) {
-  if (a.narrowed || !a.target) return std::nullopt;
-  a.narrowed = true;
+  if (a.once.narrow || !a.target) return std::nullopt;
+  a.once.narrow = true;
   const auto [rho, radius, center] = moving(c, a, pose);
   const std::optional<Narrowing> n =
       grown_blockers(c, c.map.familiar(), true, radius, center, *a.target);

@@ -2,7 +2,6 @@
 // the law and every guide failed to reach the drop point; it is rejected with its surroundings
 // (targets.h, drop_point) and the action plans again with a fresh guide budget, up to
 // kMaxRedrops per action.
-#include <limits>
 
 #include "executive/recovery_units.h"
 
@@ -10,17 +9,13 @@ namespace rearm::executive::units {
 
 std::optional<Advance> redrop(const Context& c, ActionState& a, const Pose& /*pose*/,
                               Trigger& /*trigger*/, Tick tick) {
-  if (!a.target || a.redrops >= kMaxRedrops) return std::nullopt;
-  ++a.redrops;
+  if (!a.target || a.drop.redrops >= kMaxRedrops) return std::nullopt;
+  ++a.drop.redrops;
   ++c.recoveries.redrops;
-  a.rejected_drops.push_back(*a.target);
+  a.drop.rejected.push_back(*a.target);
   a.planned = false;
   a.target.reset();
-  a.guide.clear();
-  a.tracking = false;
-  a.guides = 0;
-  a.guide_base = 0;
-  a.guide_best = std::numeric_limits<double>::infinity();
+  a.guide.restart();
   a.monitor.reset(tick.t);
   return restart();
 }

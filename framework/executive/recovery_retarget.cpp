@@ -10,8 +10,8 @@ namespace rearm::executive::units {
 std::optional<Advance> retarget(const Context& c, ActionState& a, const Pose& /*pose*/,
                                 Trigger& trigger, Tick /*tick*/) {
   if (!drop_points(c, a)) return std::nullopt;
-  ++a.retargets;
-  a.rejected_drops.push_back(*a.target);
+  ++a.drop.retargets;
+  a.drop.rejected.push_back(*a.target);
   a.planned = false;
   a.target.reset();
   Advance out = restart();

@@ -11,7 +11,7 @@
 namespace rearm::executive {
 
 bool drop_points(const Context& c, const ActionState& a) {
-  return c.p.robust.drop && a.retargets <= kMaxDropRetargets;
+  return c.p.robust.drop && a.drop.retargets <= kMaxDropRetargets;
 }
 
 // Robust drop rule: the paper's early-stop test (clear of every region, and 2(r + max ρ) from
@@ -32,12 +32,12 @@ bool drop_clear(const Context& c, const Point& xc, double rho, double slack) {
 // clearance and the region rule (both without the slack the point was chosen with, so that the
 // target does not jump as the map grows).
 bool drop_kept(const Context& c, const ActionState& a, const Point& q, double rho) {
-  if (a.drop_level == 0) return drop_clear(c, q, rho);
+  if (a.drop.level == 0) return drop_clear(c, q, rho);
   const std::optional<std::string> carried = c.map.carried();
   if (!carried || !clear_of_regions(q, c.p.robot_radius + rho, c.regions)) return false;
-  if (a.drop_level >= kDropLevels.size()) return true;
+  if (a.drop.level >= kDropLevels.size()) return true;
   return known_clearance(c.map, q, *carried) >=
-         kDropLevels[a.drop_level] * (c.p.robot_radius + max_object_radius(c));
+         kDropLevels[a.drop.level] * (c.p.robot_radius + max_object_radius(c));
 }
 
 // The robust variant's drop point: searched in the pair's mapped freespace F_k (the visible
@@ -69,14 +69,14 @@ std::optional<Point> drop_point(const Context& c, ActionState& a, const geometry
   // sees now, so a point can look clear from one side and not from another.
   const std::string carried = c.map.carried().value_or("");
   auto accept = [&](const Point& q, std::size_t k) {
-    for (const Point& x : a.rejected_drops) {
+    for (const Point& x : a.drop.rejected) {
       if ((q - x).norm() < 2 * unit) return false;
     }
     return clear_of_regions(q, c.p.robot_radius + rho + kDropSlack, c.regions) &&
            (k == need.size() || known_clearance(c.map, q, carried) >= need[k]);
   };
   const auto q = nearest_clear_point(where, center, raster_need, accept, c.p.guide, true);
-  a.drop_level = q ? q->level : kDropLevels.size();  // none: the paper's target, kept as is
+  a.drop.level = q ? q->level : kDropLevels.size();  // none: the paper's target, kept as is
   if (!q) return std::nullopt;
   if (q->level > 0) ++c.recoveries.pocket_drops;
   return q->point;
