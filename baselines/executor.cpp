@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <iterator>
 #include <numbers>
+#include <optional>
 #include <sstream>
 #include <utility>
 
@@ -83,6 +85,17 @@ struct Command {
 };
 
 enum class Outcome { kArrived, kCommand, kFailed };
+
+// What a tick of a phase gave: a command to step, the next phase (entered this tick), or the
+// plan's end (completed or failed, the log says which).
+enum class Step { kCommand, kNext, kEnd };
+
+// kCommand and kFailed as steps; kArrived: nullopt, the phase goes on to its next.
+std::optional<Step> unless_arrived(Outcome o) {
+  if (o == Outcome::kCommand) return Step::kCommand;
+  if (o == Outcome::kFailed) return Step::kEnd;
+  return std::nullopt;
+}
 
 }  // namespace
 
@@ -397,79 +410,54 @@ struct PlanExecutor::Impl {
     return Outcome::kArrived;
   }
 
-  // --- the phase machine: advances through instantaneous phase changes (grip, release) until a
-  // command is due; nullopt when the plan ended. ---
-  std::optional<Command> next_command() {
-    Command c;
-    for (;;) {
-      switch (phase) {
-        case Phase::kIdle:
-          return std::nullopt;
-
-        case Phase::kStartMove:
-          if (!start_move()) return std::nullopt;
-          continue;
-
-        case Phase::kTransit: {
-          const Outcome o = follow_polyline(what() + ": transit", c);
-          if (o == Outcome::kCommand) return c;
-          if (o == Outcome::kFailed) return std::nullopt;
-          phase = Phase::kTurnToGrasp;
-          continue;
-        }
-
-        case Phase::kTurnToGrasp: {
-          const Outcome o = turn_to(current().grasp_heading, c);
-          if (o == Outcome::kCommand) return c;
-          start_dock();
-          phase = Phase::kDock;
-          continue;
-        }
-
-        case Phase::kDock: {
-          const Outcome o = dock(c);
-          if (o == Outcome::kCommand) return c;
-          if (o == Outcome::kFailed) return std::nullopt;
-          continue;
-        }
-
-        case Phase::kTransfer: {
-          const Outcome o = transfer(c);
-          if (o == Outcome::kCommand) return c;
-          if (o == Outcome::kFailed) return std::nullopt;
-          phase = Phase::kStill;
-          return Command{};  // the still step; the release follows it
-        }
-
-        case Phase::kStill: {
-          world.release();
-          const sim::Pose p = world.pose();
-          start_drive(p.x, p.x - (params.standoff - params.grip_gap) * heading_vector(p.psi));
-          phase = Phase::kBackOff;
-          continue;
-        }
-
-        case Phase::kBackOff: {
-          const Outcome o = drive(what() + ": back-off", c);
-          if (o == Outcome::kCommand) return c;
-          if (o == Outcome::kFailed) return std::nullopt;
-          close("succeeded");
-          ++log.moves_done;
-          ++move;
-          phase = Phase::kStartMove;
-          continue;
-        }
-
-        case Phase::kFinalTransit: {
-          const Outcome o = follow_polyline("the final transit", c);
-          if (o == Outcome::kCommand) return c;
-          if (o == Outcome::kFailed) return std::nullopt;
-          end(ExecStatus::kCompleted, "", "succeeded");
-          return std::nullopt;
-        }
-      }
-    }
+  // --- the phases, one member each (kPhases below lists them with their sweeps) ---
+  Step idle_step(Command&) { return Step::kEnd; }
+  Step start_step(Command&) { return start_move() ? Step::kNext : Step::kEnd; }
+  Step transit_step(Command& c) {
+    if (const auto s = unless_arrived(follow_polyline(what() + ": transit", c))) return *s;
+    phase = Phase::kTurnToGrasp;
+    return Step::kNext;
   }
+  Step turn_step(Command& c) {
+    if (turn_to(current().grasp_heading, c) == Outcome::kCommand) return Step::kCommand;
+    start_dock();
+    phase = Phase::kDock;
+    return Step::kNext;
+  }
+  Step dock_step(Command& c) {
+    if (const auto s = unless_arrived(dock(c))) return *s;
+    return Step::kNext;
+  }
+  Step transfer_step(Command& c) {
+    if (const auto s = unless_arrived(transfer(c))) return *s;
+    phase = Phase::kStill;
+    c = Command{};  // the still step; the release follows it
+    return Step::kCommand;
+  }
+  Step still_step(Command&) {
+    world.release();
+    const sim::Pose p = world.pose();
+    start_drive(p.x, p.x - (params.standoff - params.grip_gap) * heading_vector(p.psi));
+    phase = Phase::kBackOff;
+    return Step::kNext;
+  }
+  Step back_off_step(Command& c) {
+    if (const auto s = unless_arrived(drive(what() + ": back-off", c))) return *s;
+    close("succeeded");
+    ++log.moves_done;
+    ++move;
+    phase = Phase::kStartMove;
+    return Step::kNext;
+  }
+  Step final_step(Command& c) {
+    if (const auto s = unless_arrived(follow_polyline("the final transit", c))) return *s;
+    end(ExecStatus::kCompleted, "", "succeeded");
+    return Step::kEnd;
+  }
+
+  // Advances through instantaneous phase changes (grip, release) until a command is due;
+  // nullopt when the plan ended.
+  std::optional<Command> next_command();
 
   void open_release() {
     const std::size_t i = current().object;
@@ -556,7 +544,110 @@ struct PlanExecutor::Impl {
                         std::nullopt});
     return out;
   }
+
+  // What the current phase still sweeps from where the robot is, with the rest of its move.
+  Point grip_of_current() const {
+    const ObjectMove& mv = current();
+    return grip_position(mv.from, r(), rho(mv.object), mv.grasp_heading, params);
+  }
+  std::vector<Point> polyline_ahead() const {
+    std::vector<Point> path{world.pose().x};
+    for (std::size_t k = next; k < vertices.size(); ++k) path.push_back(vertices[k]);
+    return path;
+  }
+  void rest_of_move(std::vector<Sweep>& out) const {
+    const std::vector<Sweep> rest = sweeps_of(move, false);
+    out.insert(out.end(), rest.begin(), rest.end());
+  }
+  void nothing_ahead(std::vector<Sweep>&) const {}
+  void transit_ahead(std::vector<Sweep>& out) const {
+    const std::vector<Point> path = polyline_ahead();
+    out.push_back(Sweep{SweepKind::kTransit, move, path, r(), std::nullopt});
+    out.push_back(
+        Sweep{SweepKind::kDock, move, {path.back(), grip_of_current()}, r(), std::nullopt});
+    rest_of_move(out);
+  }
+  void turn_ahead(std::vector<Sweep>& out) const {
+    out.push_back(
+        Sweep{SweepKind::kDock, move, {world.pose().x, grip_of_current()}, r(), std::nullopt});
+    rest_of_move(out);
+  }
+  void dock_ahead(std::vector<Sweep>& out) const {
+    out.push_back(Sweep{SweepKind::kDock, move, {world.pose().x, drive_to}, r(), std::nullopt});
+    rest_of_move(out);
+  }
+  void transfer_ahead(std::vector<Sweep>& out) const {
+    std::vector<Point> path{pair_center()};
+    const std::size_t k = segment_at(sigma);
+    for (std::size_t j = k + 1; j < track.size(); ++j) path.push_back(track[j]);
+    const double pair = pair_radius(r(), rho(current().object), params);
+    out.push_back(Sweep{SweepKind::kTransfer, move, path, pair, current().object});
+    out.push_back(sweeps_of(move, false).back());  // the back-off
+  }
+  void still_ahead(std::vector<Sweep>& out) const {
+    const sim::Pose p = world.pose();
+    const double back = params.standoff - params.grip_gap;
+    out.push_back(Sweep{
+        SweepKind::kBackOff, move, {p.x, p.x - back * heading_vector(p.psi)}, r(), std::nullopt});
+  }
+  void back_off_ahead(std::vector<Sweep>& out) const {
+    out.push_back(Sweep{SweepKind::kBackOff, move, {world.pose().x, drive_to}, r(), std::nullopt});
+  }
+  void final_ahead(std::vector<Sweep>& out) const {
+    out.push_back(
+        Sweep{SweepKind::kFinalTransit, std::nullopt, polyline_ahead(), r(), std::nullopt});
+  }
+
+  // One row per phase (row_of lists them).
+  struct PhaseRow {
+    Phase phase;
+    Step (Impl::*tick)(Command&);
+    void (Impl::*ahead)(std::vector<Sweep>&) const;
+    bool of_move;      // part of moves[move]: the later moves' sweeps follow its own
+    bool final_leg;    // the plan's final transit: its sweep stands for the plan's
+    bool tracks_pair;  // the transfer: the reference's arc length σ advances with each step
+  };
+  static const PhaseRow& row_of(Phase p);
 };
+
+// The phases of a plan's execution, in the order of a move, indexed by Phase: what a tick of
+// each does, what it still sweeps (PlanExecutor::remaining), and how it relates to the plan.
+const PlanExecutor::Impl::PhaseRow& PlanExecutor::Impl::row_of(Phase p) {
+  static constexpr PhaseRow kPhases[] = {
+      {Phase::kIdle, &Impl::idle_step, &Impl::nothing_ahead, false, false, false},
+      {Phase::kStartMove, &Impl::start_step, &Impl::nothing_ahead, false, false, false},
+      {Phase::kTransit, &Impl::transit_step, &Impl::transit_ahead, true, false, false},
+      {Phase::kTurnToGrasp, &Impl::turn_step, &Impl::turn_ahead, true, false, false},
+      {Phase::kDock, &Impl::dock_step, &Impl::dock_ahead, true, false, false},
+      {Phase::kTransfer, &Impl::transfer_step, &Impl::transfer_ahead, true, false, true},
+      {Phase::kStill, &Impl::still_step, &Impl::still_ahead, true, false, false},
+      {Phase::kBackOff, &Impl::back_off_step, &Impl::back_off_ahead, true, false, false},
+      {Phase::kFinalTransit, &Impl::final_step, &Impl::final_ahead, false, true, false},
+  };
+  static_assert(
+      [] {
+        for (std::size_t i = 0; i < std::size(kPhases); ++i) {
+          if (static_cast<std::size_t>(kPhases[i].phase) != i) return false;
+        }
+        return true;
+      }(),
+      "kPhases lists every Phase once, in the enum's order");
+  return kPhases[static_cast<std::size_t>(p)];
+}
+
+std::optional<Command> PlanExecutor::Impl::next_command() {
+  Command c;
+  for (;;) {
+    switch ((this->*row_of(phase).tick)(c)) {
+      case Step::kCommand:
+        return c;
+      case Step::kEnd:
+        return std::nullopt;
+      case Step::kNext:
+        continue;
+    }
+  }
+}
 
 PlanExecutor::PlanExecutor(sim::SimWorld& world, const RearrangementProblem& problem,
                            const BaselineParams& params, const ExecutionOptions& options)
@@ -632,7 +723,7 @@ bool PlanExecutor::tick() {
     if (t0 + m.options.dt > m.options.time_budget * (1 + kTimeSlack)) {
       m.end(ExecStatus::kTimeout,
             "the time budget of " + str(m.options.time_budget) + " s ran out at " +
-                (m.phase == Phase::kFinalTransit ? std::string("the final transit") : m.what()),
+                (Impl::row_of(m.phase).final_leg ? std::string("the final transit") : m.what()),
             "timeout");
     } else {
       m.world.step(c->v, c->omega);
@@ -644,7 +735,7 @@ bool PlanExecutor::tick() {
         }
         m.dt_checked = true;
       }
-      if (m.phase == Phase::kTransfer) {
+      if (Impl::row_of(m.phase).tracks_pair) {
         m.sigma = std::min(m.cumulative.back(), m.sigma + m.pending_advance);
       }
       m.pending_advance = 0;
@@ -669,62 +760,15 @@ std::vector<PlanExecutor::Sweep> PlanExecutor::remaining() const {
   const Impl& m = *impl_;
   std::vector<Sweep> out;
   if (!m.running()) return out;
-  const sim::Pose p = m.world.pose();
-  const double r = m.r();
-  std::size_t later = m.move;  // first move whose sweeps are all still ahead
-  if (m.move < m.plan.moves.size() && m.phase != Phase::kStartMove) {
-    const ObjectMove& mv = m.current();
-    const double rho = m.rho(mv.object);
-    const Point grip = grip_position(mv.from, r, rho, mv.grasp_heading, m.params);
-    const Point h = heading_vector(p.psi);
-    const double back = m.params.standoff - m.params.grip_gap;
-    std::vector<Sweep> rest;
-    switch (m.phase) {
-      case Phase::kTransit: {
-        std::vector<Point> path{p.x};
-        for (std::size_t k = m.next; k < m.vertices.size(); ++k) path.push_back(m.vertices[k]);
-        out.push_back(Sweep{SweepKind::kTransit, m.move, path, r, std::nullopt});
-        out.push_back(Sweep{SweepKind::kDock, m.move, {path.back(), grip}, r, std::nullopt});
-        break;
-      }
-      case Phase::kTurnToGrasp:
-        out.push_back(Sweep{SweepKind::kDock, m.move, {p.x, grip}, r, std::nullopt});
-        break;
-      case Phase::kDock:
-        out.push_back(Sweep{SweepKind::kDock, m.move, {p.x, m.drive_to}, r, std::nullopt});
-        break;
-      default:
-        break;
-    }
-    if (m.phase == Phase::kTransit || m.phase == Phase::kTurnToGrasp || m.phase == Phase::kDock) {
-      rest = m.sweeps_of(m.move, false);
-      out.insert(out.end(), rest.begin(), rest.end());
-    } else if (m.phase == Phase::kTransfer) {
-      std::vector<Point> path{m.pair_center()};
-      const std::size_t k = m.segment_at(m.sigma);
-      for (std::size_t j = k + 1; j < m.track.size(); ++j) path.push_back(m.track[j]);
-      out.push_back(
-          Sweep{SweepKind::kTransfer, m.move, path, pair_radius(r, rho, m.params), mv.object});
-      rest = m.sweeps_of(m.move, false);
-      out.push_back(rest.back());  // the back-off
-    } else if (m.phase == Phase::kStill) {
-      out.push_back(Sweep{SweepKind::kBackOff, m.move, {p.x, p.x - back * h}, r, std::nullopt});
-    } else if (m.phase == Phase::kBackOff) {
-      out.push_back(Sweep{SweepKind::kBackOff, m.move, {p.x, m.drive_to}, r, std::nullopt});
-    }
-    if (m.phase != Phase::kFinalTransit) later = m.move + 1;
-  }
-  for (std::size_t k = later; k < m.plan.moves.size(); ++k) {
+  const Impl::PhaseRow& row = Impl::row_of(m.phase);
+  (m.*row.ahead)(out);
+  for (std::size_t k = m.move + (row.of_move ? 1 : 0); k < m.plan.moves.size(); ++k) {
     const std::vector<Sweep> s = m.sweeps_of(k, true);
     out.insert(out.end(), s.begin(), s.end());
   }
-  if (m.phase == Phase::kFinalTransit) {
-    std::vector<Point> path{p.x};
-    for (std::size_t k = m.next; k < m.vertices.size(); ++k) path.push_back(m.vertices[k]);
-    out.push_back(Sweep{SweepKind::kFinalTransit, std::nullopt, path, r, std::nullopt});
-  } else if (!m.plan.final_transit.empty()) {
+  if (!row.final_leg && !m.plan.final_transit.empty()) {
     out.push_back(
-        Sweep{SweepKind::kFinalTransit, std::nullopt, m.plan.final_transit, r, std::nullopt});
+        Sweep{SweepKind::kFinalTransit, std::nullopt, m.plan.final_transit, m.r(), std::nullopt});
   }
   return out;
 }
