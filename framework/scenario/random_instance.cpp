@@ -9,26 +9,29 @@
 #include "scenario/random_instance.h"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <limits>
 #include <numbers>
 #include <optional>
 #include <string>
-#include <system_error>
 #include <utility>
 #include <vector>
 
 #include "core/error.h"
+#include "core/format.h"
 #include "core/rng.h"
 #include "geometry/boolean.h"
 #include "geometry/box.h"
 #include "geometry/convex.h"
 #include "geometry/distance.h"
 #include "geometry/polygon.h"
+#include "geometry/proximity.h"
+#include "scenario/coverage_grid.h"
+#include "scenario/instance_layout.h"
 #include "scenario/pair_raster.h"
 #include "scenario/scenario_io.h"
+#include "scenario/sealed_pocket.h"
 #include "scenario/solvability.h"
 
 namespace rearm::scenario {
@@ -36,17 +39,6 @@ namespace {
 
 using geometry::Point;
 using geometry::Polygon;
-
-// Input ranges (random_instance.h, InstanceSpec).
-constexpr int kMinObjects = 1;
-constexpr double kMinLength = 0.01;           // m: below this no length is meaningful
-constexpr double kMaxWorkspaceSide = 100;     // m: bounds the obstacle count (and run time)
-constexpr int kMaxAttemptsLimit = 1'000'000;  // bounds the run time of a hopeless spec
-
-// Clearances of the header's solvability argument.
-constexpr double kRegionGap = 0.1;        // m: start/goal spacing beyond the region diagonal
-constexpr double kRobotObjectGap = 0.5;   // m: robot start disk to object start disk
-constexpr double kPlacementSlack = 1e-6;  // m: keeps region vertices inside despite rounding
 
 // Obstacle shapes: sides of rectangles and L-shapes, hull disk diameters, in
 // [kMinObstacleSide, kMaxObstacleSide]; hulls of kMinHullPoints..kMaxHullPoints points (Box2D
@@ -85,21 +77,12 @@ constexpr double kSnapDepth = 0.15;
 constexpr double kMinClippedArea = 0.1;  // m²
 constexpr double kWallSnap = 1e-9;       // m: clipped vertices this close to a wall lie on it
 
-// Clearances (random_instance.h, "Clearances").
-constexpr double kGraspMargin = 0.05;      // m: cg beyond 2r + ρ
-constexpr double kDenseWallGap = 0.1;      // m: dense cb beyond ρ
-constexpr double kDenseRegionGap = 0.05;   // m: dense Chebyshev spacing beyond s
-constexpr double kMinRegionMargin = 0.05;  // m: the smallest region side is 2ρ + this
-// Share of the points' area that n points of spacing d may claim (d² each) before the dense
-// rules apply: random sequential placement of squares jams near 0.56, so 0.45 keeps rejection
-// sampling quick.
-constexpr double kPackingFraction = 0.45;
-constexpr double kObstacleObjectGap = 0.02;  // m: obstacle to blocker disk
-
 // A new obstacle must add at least this share of its area to the union (measured on a coverage
 // grid of kRasterCell cells): piling obstacles onto clusters would reach a density only with
 // hundreds of them.
 constexpr double kMinNewShare = 0.25;
+
+constexpr double kObstacleObjectGap = 0.02;  // m: obstacle to blocker disk
 
 // Raster of the pair freespace (pair_raster.h).
 constexpr double kRasterCell = 0.05;  // m
@@ -123,340 +106,26 @@ constexpr std::uint64_t kObstaclesStream = 4;
 constexpr std::uint64_t kPocketStream = 5;
 constexpr std::uint64_t kParkingStream = 6;
 
-// The shortest decimal that reads back to x.
-std::string num(double x) {
-  char buf[64];
-  const auto [end, ec] = std::to_chars(buf, buf + sizeof buf, x);
-  REARM_DEMAND(ec == std::errc(), "to_chars failed on a double");
-  return std::string(buf, end);
-}
-
 std::string fixed3(double x) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.3f", x);
   return buf;
 }
 
-[[noreturn]] void bad_field(const char* field, const std::string& reason) {
-  throw Error(std::string("random_instance: ") + field + ": " + reason);
-}
-
-void check_length(double x, const char* field,
-                  double max = std::numeric_limits<double>::infinity()) {
-  if (!(std::isfinite(x) && x >= kMinLength && x <= max)) {
-    const std::string range = std::isfinite(max)
-                                  ? "in [" + num(kMinLength) + ", " + num(max) + "] m"
-                                  : ">= " + num(kMinLength) + " m";
-    bad_field(field, "must be finite and " + range + ", got " + num(x));
-  }
-}
-
-void check_fraction(double x, const char* field, double max) {
-  if (!(std::isfinite(x) && x >= 0 && x <= max)) {
-    bad_field(field, "must be finite and in [0, " + num(max) + "], got " + num(x));
-  }
-}
-
 Polygon rectangle(double x0, double y0, double x1, double y1) {
   return Polygon{{Point(x0, y0), Point(x1, y0), Point(x1, y1), Point(x0, y1)}};
 }
 
-double footprint_area(const InstanceSpec& spec) {
-  const int objects = spec.objects + (spec.goal_class == GoalClass::kSealed ? 1 : 0);
-  return objects * std::numbers::pi * spec.object_radius * spec.object_radius;
-}
-
-// The workspace sides (random_instance.h: width x height, or the footprint square).
-Point workspace_size(const InstanceSpec& spec) {
-  if (spec.footprint_density == 0) return Point(spec.width, spec.height);
-  const double side = std::sqrt(footprint_area(spec) / spec.footprint_density);
-  return Point(side, side);
-}
-
-// Lengths derived from the spec (random_instance.h, "Clearances").
-struct Layout {
-  double width = 0, height = 0;
-  double passage = 0;         // w
-  double pair = 0;            // R of solvability.h
-  double grasp = 0;           // cg
-  double point_obstacle = 0;  // max(cg, s/√2 + slack)
-  double point_boundary = 0;  // cb
-  double region_side = 0;     // s
-  double spacing = 0;         // d
-  bool dense = false;         // Chebyshev spacing
-  double robot_object = 0;    // robot start to object start (centres)
-};
-
-double sparse_spacing(const InstanceSpec& spec, double w) {
-  return std::max(spec.region_side * std::numbers::sqrt2 + kRegionGap, w);
-}
-
-Layout layout(const InstanceSpec& spec) {
-  const double r = spec.robot_radius, rho = spec.object_radius;
-  Layout l;
-  const Point size = workspace_size(spec);
-  l.width = size.x();
-  l.height = size.y();
-  l.passage = 2 * (r + rho) + spec.passage_margin;
-  l.pair = r + rho + kPairMargin;
-  l.grasp = 2 * r + rho + kGraspMargin;
-  l.region_side = spec.region_side;
-  l.spacing = sparse_spacing(spec, l.passage);
-  l.point_boundary = std::max(l.grasp, l.region_side / 2 + kPlacementSlack);
-  const double inner = std::max(0.0, l.width - 2 * l.point_boundary) *
-                       std::max(0.0, l.height - 2 * l.point_boundary);
-  const int points = spec.objects + 1;  // the goals (or starts) and the parking spot
-  const double fit = std::sqrt(kPackingFraction * inner / points);
-  l.robot_object = r + rho + kRobotObjectGap;
-  if (fit < l.spacing) {
-    l.dense = true;
-    const double smallest = std::min(spec.region_side, 2 * rho + kMinRegionMargin);
-    l.region_side = std::clamp(fit - kDenseRegionGap, smallest, spec.region_side);
-    l.spacing = l.region_side + kDenseRegionGap;
-    l.point_boundary = std::max(rho + kDenseWallGap, l.region_side / 2 + kPlacementSlack);
-    l.robot_object = r + rho + kDenseRegionGap;
-  }
-  l.point_obstacle = std::max(l.grasp, l.region_side / std::numbers::sqrt2 + kPlacementSlack);
-  return l;
-}
-
-// The workspace (footprint square or width x height) fits the clearances.
-void check_workspace(const InstanceSpec& spec) {
-  const Layout l = layout(spec);
-  const char* wfield = spec.footprint_density > 0 ? "footprint_density" : "width";
-  const char* hfield = spec.footprint_density > 0 ? "footprint_density" : "height";
-  if (spec.footprint_density > 0 && !(l.width >= kMinLength && l.width <= kMaxWorkspaceSide)) {
-    bad_field("footprint_density", "gives a workspace side of " + num(l.width) + " m, outside [" +
-                                       num(kMinLength) + ", " + num(kMaxWorkspaceSide) + "] m");
-  }
-  auto wide_enough = [&](double side, const char* field) {
-    if (!(side > 2 * l.point_boundary)) {
-      bad_field(field, "workspace too small: a side must exceed " + num(2 * l.point_boundary) +
-                           " m (twice the " + num(l.point_boundary) +
-                           " m that object starts and goals keep from the boundary), got " +
-                           num(side));
-    }
-  };
-  wide_enough(l.width, wfield);
-  wide_enough(l.height, hfield);
-}
-
-void check_spec(const InstanceSpec& spec) {
-  if (spec.objects < kMinObjects || spec.objects > kMaxInstanceObjects) {
-    bad_field("objects", "must be an integer in [" + std::to_string(kMinObjects) + ", " +
-                             std::to_string(kMaxInstanceObjects) + "], got " +
-                             std::to_string(spec.objects));
-  }
-  check_fraction(spec.obstacle_density, "obstacle_density", kMaxObstacleDensity);
-  check_fraction(spec.unknown_fraction, "unknown_fraction", 1);
-  check_fraction(spec.footprint_density, "footprint_density", kMaxFootprintDensity);
-  check_length(spec.width, "width", kMaxWorkspaceSide);
-  check_length(spec.height, "height", kMaxWorkspaceSide);
-  check_length(spec.robot_radius, "robot_radius");
-  check_length(spec.object_radius, "object_radius");
-  check_length(spec.region_side, "region_side");
-  check_length(spec.sensor_range, "sensor_range");
-  check_length(spec.max_obstacle_side, "max_obstacle_side", kMaxMaxObstacleSide);
-  if (spec.max_obstacle_side < kMinMaxObstacleSide) {
-    bad_field("max_obstacle_side",
-              "must be >= " + num(kMinMaxObstacleSide) + " m, got " + num(spec.max_obstacle_side));
-  }
-  if (!(std::isfinite(spec.passage_margin) && spec.passage_margin >= kMinPassageMargin &&
-        spec.passage_margin <= kMaxPassageMargin)) {
-    bad_field("passage_margin", "must be finite and in [" + num(kMinPassageMargin) + ", " +
-                                    num(kMaxPassageMargin) + "] m, got " +
-                                    num(spec.passage_margin));
-  }
-  if (spec.max_attempts < 1 || spec.max_attempts > kMaxAttemptsLimit) {
-    bad_field("max_attempts", "must be an integer in [1, " + std::to_string(kMaxAttemptsLimit) +
-                                  "], got " + std::to_string(spec.max_attempts));
-  }
-  if (spec.region_side < 2 * spec.object_radius) {
-    bad_field("region_side", "must be >= 2 object_radius = " + num(2 * spec.object_radius) +
-                                 " m (an object must fit in its region), got " +
-                                 num(spec.region_side));
-  }
-  check_workspace(spec);
-}
-
-std::string describe(const InstanceSpec& spec) {
-  const Point size = workspace_size(spec);
-  return std::string("random_instance(class ") + to_string(spec.goal_class) +
-         ", N=" + std::to_string(spec.objects) + ", density " + num(spec.obstacle_density) +
-         ", seed " + std::to_string(spec.seed) + ", " + num(size.x()) + " x " + num(size.y()) +
-         " m)";
-}
-
 using geometry::Box;
-
-double cross(const Point& a, const Point& b) { return a.x() * b.y() - a.y() * b.x(); }
-
-// Distance between segments [a, b] and [c, d]; 0 when they may touch (collinear or crossing:
-// conservative, a rejected candidate is simply redrawn).
-double segment_distance(const Point& a, const Point& b, const Point& c, const Point& d) {
-  const double abc = cross(b - a, c - a), abd = cross(b - a, d - a);
-  const double cda = cross(d - c, a - c), cdb = cross(d - c, b - c);
-  if (abc * abd <= 0 && cda * cdb <= 0) return 0;
-  return std::min({(geometry::nearest_on_segment(c, d, a) - a).norm(),
-                   (geometry::nearest_on_segment(c, d, b) - b).norm(),
-                   (geometry::nearest_on_segment(a, b, c) - c).norm(),
-                   (geometry::nearest_on_segment(a, b, d) - d).norm()});
-}
-
-// Whether two closed simple polygons are less than w apart (they overlap, one contains the
-// other, or two edges come closer than w). Edge pairs whose bounding boxes are >= w apart are
-// skipped (the box gap bounds the segments' distance from below).
-bool closer_than(const Polygon& p, const Polygon& q, double w) {
-  if (geometry::contains(q, p.vertices.front()) || geometry::contains(p, q.vertices.front())) {
-    return true;
-  }
-  const Box qbox = geometry::box_of(q);
-  for (std::size_t i = 0, n = p.size(); i < n; ++i) {
-    const Point& a = p.vertices[i];
-    const Point& b = p.vertices[(i + 1) % n];
-    const Box ebox = geometry::box_of(a, b);
-    if (geometry::gap(ebox, qbox) >= w) continue;
-    for (std::size_t j = 0, m = q.size(); j < m; ++j) {
-      const Point& c = q.vertices[j];
-      const Point& d = q.vertices[(j + 1) % m];
-      if (geometry::gap(ebox, geometry::box_of(c, d)) >= w) continue;
-      if (segment_distance(a, b, c, d) < w) return true;
-    }
-  }
-  return false;
-}
-
-// How deep the deepest vertex of p lies inside q (0 when none does).
-double vertex_depth(const Polygon& p, const Polygon& q, const Box& qbox) {
-  double depth = 0;
-  for (const Point& v : p.vertices) {
-    if (geometry::gap(qbox, v) > 0) continue;
-    depth = std::max(depth, -geometry::signed_distance(q, v));
-  }
-  return depth;
-}
-
-// Crossing-number point-in-polygon in doubles (the coverage grid's estimate only).
-bool inside(const Polygon& p, const Point& x) {
-  bool in = false;
-  for (std::size_t i = 0, j = p.size() - 1; i < p.size(); j = i++) {
-    const Point& a = p.vertices[i];
-    const Point& b = p.vertices[j];
-    if ((a.y() > x.y()) != (b.y() > x.y()) &&
-        x.x() < (b.x() - a.x()) * (x.y() - a.y()) / (b.y() - a.y()) + a.x()) {
-      in = !in;
-    }
-  }
-  return in;
-}
-
-// Which cells of a grid over the workspace have their centre inside some obstacle.
-class CoverageGrid {
- public:
-  CoverageGrid(double width, double height, double cell)
-      : h_(cell),
-        nx_(std::max(1, static_cast<int>(std::ceil(width / cell)))),
-        ny_(std::max(1, static_cast<int>(std::ceil(height / cell)))),
-        covered_(static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_), 0) {}
-
-  // Cells of p not covered yet; with commit, they become covered.
-  std::size_t fresh(const Polygon& p, bool commit) {
-    Point lo = p.vertices.front(), hi = lo;
-    for (const Point& v : p.vertices) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
-    const int x0 = std::max(0, static_cast<int>(lo.x() / h_));
-    const int x1 = std::min(nx_ - 1, static_cast<int>(hi.x() / h_));
-    const int y0 = std::max(0, static_cast<int>(lo.y() / h_));
-    const int y1 = std::min(ny_ - 1, static_cast<int>(hi.y() / h_));
-    std::size_t n = 0;
-    for (int iy = y0; iy <= y1; ++iy) {
-      for (int ix = x0; ix <= x1; ++ix) {
-        std::uint8_t& c = covered_[static_cast<std::size_t>(iy * nx_ + ix)];
-        if (c != 0 || !inside(p, Point((ix + 0.5) * h_, (iy + 0.5) * h_))) continue;
-        ++n;
-        if (commit) c = 1;
-      }
-    }
-    return n;
-  }
-  double cell_area() const { return h_ * h_; }
-
- private:
-  double h_;
-  int nx_, ny_;
-  std::vector<std::uint8_t> covered_;
-};
-
-// The nearest pair of boundary points (on p, on q) of two disjoint polygons, by the four
-// endpoint-to-segment distances of every edge pair (exact for non-crossing edges).
-std::pair<Point, Point> nearest_points(const Polygon& p, const Polygon& q) {
-  std::pair<Point, Point> best{p.vertices.front(), q.vertices.front()};
-  double d = std::numeric_limits<double>::infinity();
-  auto consider = [&](const Point& a, const Point& b) {
-    const double e = (a - b).norm();
-    if (e < d) d = e, best = {a, b};
-  };
-  for (std::size_t i = 0, n = p.size(); i < n; ++i) {
-    const Point& a = p.vertices[i];
-    const Point& b = p.vertices[(i + 1) % n];
-    for (std::size_t j = 0, m = q.size(); j < m; ++j) {
-      const Point& c = q.vertices[j];
-      const Point& e = q.vertices[(j + 1) % m];
-      consider(a, geometry::nearest_on_segment(c, e, a));
-      consider(geometry::nearest_on_segment(a, b, c), c);
-    }
-  }
-  return best;
-}
-
-// Distance from x to the closed axis-aligned square of side `side` centred at c.
-double square_distance(const Point& c, double side, const Point& x) {
-  const double dx = std::max(std::abs(x.x() - c.x()) - side / 2, 0.0);
-  const double dy = std::max(std::abs(x.y() - c.y()) - side / 2, 0.0);
-  return std::hypot(dx, dy);
-}
+using geometry::closer_than;
+using geometry::nearest_points;
+using geometry::square_distance;
+using geometry::vertex_depth;
 
 struct Obstacle {
   Polygon polygon;
   Box box;
   bool unknown = false;
-};
-
-// The pocket of the sealed class in its own frame (random_instance.h, "Sealed pocket"): the
-// interior [-a, a] x [0, 2a], walls of thickness t, the mouth |x| <= m/2 in the front wall.
-struct PocketFrame {
-  double a = 0, t = 0, m = 0;
-  Polygon walls() const {
-    return Polygon{{Point(-a - t, -t), Point(a + t, -t), Point(a + t, 2 * a + t),
-                    Point(m / 2, 2 * a + t), Point(m / 2, 2 * a), Point(a, 2 * a), Point(a, 0),
-                    Point(-a, 0), Point(-a, 2 * a), Point(-m / 2, 2 * a), Point(-m / 2, 2 * a + t),
-                    Point(-a - t, 2 * a + t)}};
-  }
-  Point goal() const { return Point(0, a); }
-  Point blocker() const { return Point(0, 2 * a + t); }
-  Point mouth() const { return Point(0, 2 * a + t / 2); }
-};
-
-struct Pose {
-  Point origin = Point::Zero();
-  double cs = 1, sn = 0;
-  Point apply(const Point& v) const {
-    return origin + Point(cs * v.x() - sn * v.y(), sn * v.x() + cs * v.y());
-  }
-  Point inverse(const Point& x) const {
-    const Point d = x - origin;
-    return Point(cs * d.x() + sn * d.y(), -sn * d.x() + cs * d.y());
-  }
-  Polygon apply(Polygon p) const {
-    for (Point& v : p.vertices) v = apply(v);
-    return p;
-  }
-};
-
-struct Pocket {
-  PocketFrame frame;
-  Pose pose;
-  Point goal, blocker, mouth, outward;
-  double keepout = 0;  // other points keep this far from the blocker
 };
 
 double wall_gap(const Polygon& p, double width, double height) {
@@ -614,9 +283,9 @@ class Generator {
         if (out.size() == initial + static_cast<std::size_t>(n)) return;
       }
       placement_failed(what + " " + std::to_string(first_index + i),
-                       "points keep a spacing >= " + num(l_.spacing) +
-                           (l_.dense ? " m (Chebyshev)" : " m") +
-                           " and >= " + num(l_.point_boundary) + " m from the boundary");
+                       "points keep a spacing >= " + shortest_decimal(l_.spacing) +
+                           (l_.dense ? " m (Chebyshev)" : " m") + " and >= " +
+                           shortest_decimal(l_.point_boundary) + " m from the boundary");
     }
   }
 
@@ -669,9 +338,10 @@ class Generator {
         return;
       }
     }
-    placement_failed("the robot start", "it keeps >= " + num(robot_clearance()) +
-                                            " m from the boundary, >= " + num(l_.robot_object) +
-                                            " m from every object start and out of every region");
+    placement_failed("the robot start",
+                     "it keeps >= " + shortest_decimal(robot_clearance()) +
+                         " m from the boundary, >= " + shortest_decimal(l_.robot_object) +
+                         " m from every object start and out of every region");
   }
 
   // The pocket frame for this spec: interior half-side a, walls t, mouth m (>= what the
@@ -714,7 +384,7 @@ class Generator {
       return;
     }
     placement_failed("the sealed pocket",
-                     "its walls keep >= " + num(l_.passage) + " m from the boundary");
+                     "its walls keep >= " + shortest_decimal(l_.passage) + " m from the boundary");
   }
 
   // Raster targets (random_instance.h, "Solvability"): the grasp positions of every start,
