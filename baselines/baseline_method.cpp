@@ -32,6 +32,8 @@ const char* summary_of(Method m) {
       return "B2 BiRRT over arrangements with temporary placements, full map offline";
     case Method::kReplan:
       return "B2 on the sensed map, replanning when the sensor reveals an obstacle";
+    case Method::kBuffer:
+      return "TRLB-style running-buffer order with lazy buffer spots, full map offline";
   }
   return "";
 }
@@ -79,7 +81,7 @@ class BaselineMethod final : public experiment::Method {
 }  // namespace
 
 void register_methods(experiment::MethodRegistry& registry) {
-  for (const Method m : {Method::kMrs, Method::kBirrt, Method::kReplan}) {
+  for (const Method m : {Method::kMrs, Method::kBirrt, Method::kReplan, Method::kBuffer}) {
     registry.add(std::make_unique<BaselineMethod>(m));
   }
 }

@@ -31,7 +31,16 @@ PlanResult plan_with(Method m, const RearrangementProblem& p, const BaselineOpti
   po.max_queries = o.query_limit == 0 ? 0 : std::max(1L, o.query_limit - queries_used);
   po.seed = seed;
   po.iterations_per_query = o.iterations_per_query;
-  return m == Method::kMrs ? plan_mrs(p, o.params, po) : plan_birrt(p, o.params, po, o.birrt);
+  switch (m) {
+    case Method::kMrs:
+      return plan_mrs(p, o.params, po);
+    case Method::kBuffer:
+      return plan_buffer(p, o.params, po, o.buffer);
+    case Method::kBirrt:
+    case Method::kReplan:
+      break;
+  }
+  return plan_birrt(p, o.params, po, o.birrt);
 }
 
 ExecutionOptions execution_options(const scenario::Scenario& s, const BaselineOptions& o) {
@@ -275,6 +284,8 @@ const char* to_string(Method m) {
       return "birrt";
     case Method::kReplan:
       return "replan";
+    case Method::kBuffer:
+      return "buffer";
   }
   return "?";
 }
@@ -283,7 +294,8 @@ Method method_from_string(const std::string& s) {
   if (s == "mrs") return Method::kMrs;
   if (s == "birrt") return Method::kBirrt;
   if (s == "replan") return Method::kReplan;
-  throw Error("unknown baseline method '" + s + "' (expected mrs, birrt or replan)");
+  if (s == "buffer") return Method::kBuffer;
+  throw Error("unknown baseline method '" + s + "' (expected mrs, birrt, replan or buffer)");
 }
 
 BaselineRecord run_baseline(const scenario::Scenario& s, const BaselineOptions& o) {

@@ -16,13 +16,14 @@
 #include <vector>
 
 #include "baselines/birrt.h"
+#include "baselines/buffer.h"
 #include "baselines/executor.h"
 #include "scenario/scenario.h"
 
 namespace rearm::baselines {
 
-enum class Method { kMrs, kBirrt, kReplan };
-const char* to_string(Method m);                  // "mrs", "birrt", "replan"
+enum class Method { kMrs, kBirrt, kReplan, kBuffer };
+const char* to_string(Method m);                  // "mrs", "birrt", "replan", "buffer"
 Method method_from_string(const std::string& s);  // throws rearm::Error naming the choices
 
 struct BaselineOptions {
@@ -33,6 +34,7 @@ struct BaselineOptions {
   bool record = true;   // keep the executed trajectory (figure, animation)
   BaselineParams params;
   BirrtOptions birrt;
+  BufferOptions buffer;
   int iterations_per_query = 20000;
   // Motion queries for the whole trial, all replans together (0: no limit;
   // PlannerOptions::max_queries): the deterministic budget of the Monte Carlo sweeps.

@@ -30,7 +30,10 @@ constexpr const char* kFooter =
     "  birrt   B2, bidirectional RRT over object arrangements (non-monotone instances)\n"
     "  replan  B2 on the map seen so far, replanning when the sensor reveals an obstacle\n"
     "          that invalidates the plan\n"
-    "mrs and birrt get the full map offline. The plan is checked by an independent validator\n"
+    "  buffer  TRLB-style: the order of goals that keeps the fewest objects in buffers at\n"
+    "          once, blockers parked at buffer spots chosen lazily (non-monotone instances)\n"
+    "mrs, birrt and buffer get the full map offline. The plan is checked by an independent "
+    "validator\n"
     "and executed in the same Box2D world as `rearm run`. Writes DIR/metrics.json (the keys of\n"
     "`rearm run` plus planning_time_s, subqueries, nodes, ...), DIR/trajectory.json, and the\n"
     "figure and animation (experiments/plot/run.py). DIR defaults to out/<scenario>-<method>.\n"
@@ -87,9 +90,9 @@ Command add_baseline(CLI::App& program) {
   c->footer(kFooter);
   auto a = std::make_shared<BaselineArgs>();
   add_scenario_file(*c, a->path);
-  c->add_option("--method", a->method, "B1 (mrs), B2 (birrt) or B2 replanning (replan)")
+  c->add_option("--method", a->method, "B1 (mrs), B2 (birrt), B2 replanning (replan) or buffer")
       ->required()
-      ->check(CLI::IsMember({"mrs", "birrt", "replan"}));
+      ->check(CLI::IsMember({"mrs", "birrt", "replan", "buffer"}));
   c->add_option("--time-limit", a->options.time_limit, "planning time budget (s, default 10)")
       ->check(finite_check())
       ->check(positive_check())

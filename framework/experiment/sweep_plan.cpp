@@ -74,7 +74,7 @@ std::string to_string(const Shard& s) {
 
 SweepPlan plan_sweep(const scenario::SweepFile& f, const MethodRegistry& methods) {
   for (std::size_t i = 0; i < f.methods.size(); ++i) {
-    if (!methods.contains(f.methods[i])) {
+    if (!methods.contains(scenario::method_entry(f.methods[i]).method)) {
       std::string known;
       for (const auto& m : methods.names()) known += (known.empty() ? "" : ", ") + m;
       throw scenario::ScenarioError(f.source, "methods[" + std::to_string(i) + "]",
@@ -96,6 +96,9 @@ SweepPlan plan_sweep(const scenario::SweepFile& f, const MethodRegistry& methods
               job.rep = rep;
               job.workspace_rule = f.workspace.describe();
               for (const std::string& m : f.methods) {
+                // "NAME@K": its own budget; the seed is NAME's, so one planner at two budgets
+                // runs the same search, cut at two points.
+                const scenario::MethodEntry e = scenario::method_entry(m);
                 TrialJob t;
                 t.index = plan.trials.size();
                 t.instance = job.index;
@@ -103,9 +106,9 @@ SweepPlan plan_sweep(const scenario::SweepFile& f, const MethodRegistry& methods
                                            job.spec,
                                            rep,
                                            job.workspace_rule,
-                                           planner_seed(job.spec.seed, m),
+                                           planner_seed(job.spec.seed, e.method),
                                            f.time_limit,
-                                           f.query_limit};
+                                           e.query_limit.value_or(f.query_limit)};
                 plan.trials.push_back(std::move(t));
               }
               plan.instances.push_back(std::move(job));

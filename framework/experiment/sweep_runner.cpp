@@ -105,7 +105,7 @@ TrialRecord run_one(const SweepPlan& plan, const TrialJob& t, const Generated& g
   const auto wall0 = std::chrono::steady_clock::now();
   const double cpu0 = thread_cpu_seconds();
   try {
-    r.outcome = methods.get(t.settings.method)
+    r.outcome = methods.get(scenario::method_entry(t.settings.method).method)
                     .run(*g.scenario, MethodInput{t.settings.planner_seed, t.settings.time_limit_s,
                                                   t.settings.query_limit, checked});
   } catch (const std::exception& e) {

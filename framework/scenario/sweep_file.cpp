@@ -159,6 +159,11 @@ void read_lists(Reader& r, const Fields& f, SweepFile& s) {
                                           [&](const YAML::Node& n, const std::string& p) {
                                             std::string m = r.text(n, p);
                                             if (m.empty()) r.fail(p, "empty method name");
+                                            try {
+                                              (void)method_entry(m);
+                                            } catch (const Error& e) {
+                                              r.fail(p, e.what());
+                                            }
                                             return m;
                                           });
   s.methods = expand_ablation_group(named);
@@ -302,6 +307,22 @@ SweepFile parse_sweep_file(const std::string& yaml, const std::string& source) {
 
 SweepFile load_sweep_file(const std::string& path) {
   return parse_sweep_file(detail::read_text_file(path, "the sweep"), path);
+}
+
+MethodEntry method_entry(const std::string& entry) {
+  const std::size_t at = entry.find('@');
+  MethodEntry out{entry.substr(0, at), std::nullopt};
+  if (out.method.empty()) throw Error("method entry '" + entry + "' names no method");
+  if (at == std::string::npos) return out;
+  const std::string budget = entry.substr(at + 1);
+  long k = 0;
+  const auto [end, ec] = std::from_chars(budget.data(), budget.data() + budget.size(), k);
+  if (ec != std::errc() || end != budget.data() + budget.size() || k < 1 || k > kMaxQueryLimit) {
+    throw Error("method entry '" + entry + "': the budget after '@' must be an integer in [1, " +
+                std::to_string(kMaxQueryLimit) + "] motion queries");
+  }
+  out.query_limit = k;
+  return out;
 }
 
 }  // namespace rearm::scenario

@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -36,8 +37,11 @@ struct WorkspaceRule {
 struct SweepFile {
   std::string name;  // file-name safe: it names the output
   std::string description;
-  std::string source;                // the file it was read from
-  std::vector<std::string> methods;  // checked against the method registry by the caller
+  std::string source;  // the file it was read from
+  // Checked against the method registry by the caller. An entry "NAME@K" runs method NAME with
+  // its own budget of K motion queries (MethodEntry), so the same planner can run at several
+  // budgets in one sweep; the rows' method column keeps the entry as written.
+  std::vector<std::string> methods;
   std::vector<GoalClass> classes;
   std::vector<int> objects;
   std::vector<double> densities;  // target obstacle densities
@@ -53,6 +57,15 @@ struct SweepFile {
   // Cells × repetitions × methods.
   std::size_t trial_count() const;
 };
+
+// A methods entry: the method's registry name and, for "NAME@K", its own query budget.
+struct MethodEntry {
+  std::string method;
+  std::optional<long> query_limit;
+};
+// Splits an entry; throws rearm::Error for an empty name or a budget that is not an integer in
+// [1, kMaxQueryLimit].
+MethodEntry method_entry(const std::string& entry);
 
 // Bounds of the format (experiments/sweeps/README.md).
 inline constexpr int kMaxSweepSeeds = 100000;

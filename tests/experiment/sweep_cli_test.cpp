@@ -16,6 +16,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -34,7 +35,7 @@ namespace {
 namespace fs = std::filesystem;
 
 // The smoke sweep; below scale 1 (REARM_TEST_SCALE: the sanitizer stage, whose rearm is built
-// with the sanitizers) a smaller one of the same shape, 12 trials.
+// with the sanitizers) a smaller one of the same shape, 16 trials.
 const char* const kSmoke = test_support::test_scale() < 1 ? "tests/experiment/smoke_small.yaml"
                                                           : "experiments/sweeps/smoke.yaml";
 
@@ -76,6 +77,51 @@ Rows rows_of(const fs::path& csv, std::size_t* count = nullptr) {
   return rows;
 }
 
+// The machine's load average over the last minute, for the report of wall-clock cuts.
+std::string load_average() {
+  std::ifstream in("/proc/loadavg");
+  std::string one;
+  in >> one;
+  return one.empty() ? "unknown" : one;
+}
+
+// Rows equal key by key, except rows that a wall clock cut (status timeout: the smoke sweep's
+// 60 s safety net, which only a loaded machine reaches; the planners stop on their query
+// budget, which binds the same everywhere): those are reported with the load, not compared.
+// At least half of the rows must be compared, or the check would say nothing.
+void expect_same_rows(const Rows& got, const Rows& want) {
+  const std::size_t status = [] {
+    const std::vector<std::string> all = trial_columns();
+    std::size_t k = 0;
+    for (const std::string& c : all) {
+      if (c == "status") break;
+      if (!is_timing_column(c)) ++k;
+    }
+    return k;
+  }();
+  ASSERT_EQ(got.size(), want.size());
+  std::size_t compared = 0;
+  std::vector<std::string> cut;
+  for (const auto& [key, row] : want) {
+    const auto it = got.find(key);
+    ASSERT_NE(it, got.end()) << "missing row " << key;
+    if (row.at(status) == "timeout" || it->second.at(status) == "timeout") {
+      cut.push_back(key);
+      continue;
+    }
+    EXPECT_EQ(it->second, row) << key;
+    ++compared;
+  }
+  if (!cut.empty()) {
+    std::cout << "[ note ] " << cut.size() << " of " << want.size()
+              << " rows not compared: a wall clock cut them (load average " << load_average()
+              << "), first: " << cut.front() << "\n";
+  }
+  EXPECT_GE(2 * compared, want.size())
+      << "the wall clock cut " << cut.size() << " of " << want.size() << " rows (load average "
+      << load_average() << ")";
+}
+
 std::size_t smoke_trials() { return scenario::load_sweep_file(kSmoke).trial_count(); }
 
 class SweepCli : public ::testing::Test {
@@ -101,7 +147,7 @@ TEST_F(SweepCli, EveryTrialOnceAndTheSameRowsOnTwoThreads) {
   EXPECT_EQ(one.size(), smoke_trials());
   const fs::path two = work_dir() / "two_threads";
   ASSERT_EQ(sweep(two.string(), "--threads 2"), 0);
-  EXPECT_EQ(rows_of(two / "trials.csv"), one);
+  expect_same_rows(rows_of(two / "trials.csv"), one);
   // A rerun into a finished folder runs nothing and adds nothing.
   ASSERT_EQ(sweep(two.string(), "--threads 2"), 0);
   std::size_t again = 0;
@@ -122,7 +168,7 @@ TEST_F(SweepCli, TheUnionOfThreeShardsIsTheUnshardedRun) {
   }
   const fs::path merged = work_dir() / "merged";
   ASSERT_EQ(run("sweep merge" + dirs + " --out " + merged.string()), 0);
-  EXPECT_EQ(rows_of(merged / "trials.csv"), reference());
+  expect_same_rows(rows_of(merged / "trials.csv"), reference());
   // Shard folders are not interchangeable: a rerun of shard 0 into shard 1's folder is refused.
   EXPECT_NE(sweep((work_dir() / "shard_1").string(), "--shard 0/3"), 0);
 }
@@ -164,7 +210,7 @@ TEST_F(SweepCli, AKilledSweepRunAgainLosesAndDuplicatesNothing) {
   std::size_t count = 0;
   const Rows after = rows_of(d / "trials.csv", &count);  // fails on duplicates
   EXPECT_EQ(count, smoke_trials());
-  EXPECT_EQ(after, reference());
+  expect_same_rows(after, reference());
 }
 
 TEST_F(SweepCli, OmplBenchmarkStatisticsReadsTheLogs) {

@@ -92,6 +92,29 @@ TEST(SweepPlan, ShardsPartitionTheTrials) {
   }
 }
 
+// "NAME@K": method NAME with its own budget of K queries; the row keeps the entry as its
+// method, the planner seed is NAME's (one search, cut at two budgets).
+TEST(SweepPlan, MethodEntriesCarryTheirOwnBudget) {
+  const SweepPlan p =
+      plan_sweep(scenario::parse_sweep_file("name: b\nmethods: [birrt, birrt@1000, birrt@10000]\n"
+                                            "classes: [random]\nobjects: [2]\ndensities: [0.05]\n"
+                                            "workspace: {side: 8}\nseeds: 1\nquery_limit: 500\n"),
+                 registry());
+  ASSERT_EQ(p.trials.size(), 3u);
+  EXPECT_EQ(p.trials[0].settings.query_limit, 500);
+  EXPECT_EQ(p.trials[1].settings.query_limit, 1000);
+  EXPECT_EQ(p.trials[2].settings.query_limit, 10000);
+  EXPECT_EQ(p.trials[2].settings.method, "birrt@10000");
+  EXPECT_EQ(p.trials[1].settings.planner_seed, p.trials[0].settings.planner_seed);
+  EXPECT_NE(key_column(p.trials[1].settings), key_column(p.trials[2].settings));
+  for (const char* bad : {"birrt@", "birrt@0", "birrt@x", "@100", "birrt@1e3", "birrt@-5"}) {
+    EXPECT_THROW(scenario::method_entry(bad), Error) << bad;
+  }
+  scenario::SweepFile f = file();
+  f.methods.push_back("rrtstar@100");  // the name is checked without its budget
+  EXPECT_THROW(plan_sweep(f, registry()), scenario::ScenarioError);
+}
+
 TEST(SweepPlan, UnknownMethodsNameTheirKey) {
   scenario::SweepFile f = file();
   f.methods.push_back("rrtstar");

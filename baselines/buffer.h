@@ -1,0 +1,27 @@
+// The `buffer` baseline: TRLB's running-buffer rearrangement (Gao, Lau, Huang, Bekris, Yu,
+// "Fast high-quality tabletop rearrangement in bounded workspace", ICRA 2022), adapted to the
+// paper's mobile robot. The dependency graph of goals on starts (buffer_order.h) fixes an order
+// that keeps the fewest objects in buffers at once; walking it, the objects that block the next
+// goal are parked at buffer spots chosen lazily (only when the order needs them), then the
+// object goes to its goal. Unlike the tabletop original, every step is a move of move_planner.h:
+// a transit of the robot alone and a transfer of the robot–object pair, each an OMPL motion
+// query in the current arrangement. A move that fails tries the next buffer spot, then the
+// next object in the order's ranking (a depth-first search over orders, the sets of arrived
+// objects that led nowhere remembered as in mRS).
+#pragma once
+
+#include "baselines/mrs.h"
+
+namespace rearm::baselines {
+
+struct BufferOptions {
+  // Buffer spot candidates drawn uniformly in the workspace's box per parking, and how many
+  // of the acceptable ones (nearest the object first) are tried with a move.
+  int spot_samples = 400;
+  int spot_tries = 4;
+};
+
+PlanResult plan_buffer(const RearrangementProblem& problem, const BaselineParams& params,
+                       const PlannerOptions& options, const BufferOptions& buffer = {});
+
+}  // namespace rearm::baselines
