@@ -1,6 +1,7 @@
 #include "baselines/buffer.h"
 
 #include <algorithm>
+#include <cmath>
 #include <set>
 #include <string>
 #include <utility>
@@ -50,6 +51,8 @@ class BufferPlanner {
   std::vector<std::size_t> path_blockers(const Walk& w, const Point& from, const Point& to,
                                          double radius, double margin, std::size_t skip,
                                          std::vector<Way>& ways);
+  std::vector<std::size_t> near_blockers(const Walk& w, std::size_t k, const Point& target,
+                                         bool grasp, std::vector<Way>& ways) const;
   bool clear_way(const std::vector<std::size_t>& blockers, ObjectSet at_goal, Walk& w,
                  const std::vector<Way>& ways);
   MoveOutcome move_to_goal(std::size_t i, ObjectSet at_goal, Walk& w);
@@ -146,28 +149,79 @@ std::optional<std::string> BufferPlanner::blocked_goal() const {
   return std::nullopt;
 }
 
-// The move of goal object i to its goal; when no path is found, the objects a path would have to
-// cross (the transit to the object, the transfer to the goal, each planned without the movable
-// objects: the mobile robot's version of fmRS's constraints) are parked and the move is tried
-// once more. A way blocked by an object already at its goal is not cleared.
+// The move of goal object i to its goal. When it fails for want of room made by other objects,
+// those objects are parked and the move is tried once more: no path (the transit to the object
+// and the transfer to the goal, each planned among the fixed obstacles alone: the objects they
+// cross, the mobile robot's version of fmRS's constraints), no free release approach (the
+// objects on the straight approach to the goal), no free grasp (the objects on the dock from
+// the robot's side). A way closed by an object already at its goal is not cleared.
 MoveOutcome BufferPlanner::move_to_goal(std::size_t i, ObjectSet at_goal, Walk& w) {
   const std::size_t k = objects_[i];
   MoveOutcome m = planner_.plan(w.a, w.robot, k, goal(i), p_.goal_regions[k], ctx_);
-  if (m.move ||
-      (m.failure != MoveFailure::kTransitFailed && m.failure != MoveFailure::kTransferFailed)) {
-    return m;
-  }
-  const BaselineParams& prm = planner_.params();
+  if (m.move) return m;
   std::vector<Way> ways;
-  std::vector<std::size_t> blockers =
-      path_blockers(w, w.robot, w.a[k], p_.robot_radius, prm.transit_margin, k, ways);
-  for (const std::size_t b :
-       path_blockers(w, w.a[k], goal(i), pair_radius(p_.robot_radius, p_.object_radii[k], prm),
-                     prm.transfer_margin, k, ways)) {
-    if (std::find(blockers.begin(), blockers.end(), b) == blockers.end()) blockers.push_back(b);
+  std::vector<std::size_t> blockers;
+  auto add = [&](const std::vector<std::size_t>& more) {
+    for (const std::size_t b : more) {
+      if (std::find(blockers.begin(), blockers.end(), b) == blockers.end()) blockers.push_back(b);
+    }
+  };
+  const BaselineParams& prm = planner_.params();
+  const double pr = pair_radius(p_.robot_radius, p_.object_radii[k], prm);
+  switch (m.failure) {
+    case MoveFailure::kTransitFailed:
+    case MoveFailure::kTransferFailed:
+      add(path_blockers(w, w.robot, w.a[k], p_.robot_radius, prm.transit_margin, k, ways));
+      add(path_blockers(w, w.a[k], goal(i), pr, prm.transfer_margin, k, ways));
+      break;
+    case MoveFailure::kTargetBlocked:
+    case MoveFailure::kNoGrasp:
+      add(near_blockers(w, k, goal(i), m.failure == MoveFailure::kNoGrasp, ways));
+      break;
+    default:
+      return m;
   }
   if (blockers.empty() || !clear_way(blockers, at_goal, w, ways)) return m;
   return planner_.plan(w.a, w.robot, k, goal(i), p_.goal_regions[k], ctx_);
+}
+
+// The objects (but k) on object k's straight release approach to `target` (the pair disk swept
+// along it, for the heading from the object to the target, as move_planner.h tries first) or,
+// with `grasp`, on its dock (the robot disk from the standoff to the grip, heading from the
+// robot, and the gripped pair's disk).
+std::vector<std::size_t> BufferPlanner::near_blockers(const Walk& w, std::size_t k,
+                                                      const Point& target, bool grasp,
+                                                      std::vector<Way>& ways) const {
+  const BaselineParams& prm = planner_.params();
+  const double r = p_.robot_radius, rho = p_.object_radii[k];
+  const double ell = pair_offset(rho, prm), pr = pair_radius(r, rho, prm);
+  const Point o = w.a[k];
+  const Point from = grasp ? w.robot : o, to = grasp ? o : target;
+  if ((to - from).norm() == 0) return {};
+  const double psi = std::atan2(to.y() - from.y(), to.x() - from.x());
+  const Point u = heading_vector(psi);
+  Way way;
+  if (grasp) {
+    const Point xg = grip_position(o, r, rho, psi, prm);
+    way = Way{{standoff_position(o, r, rho, psi, prm), xg, xg + ell * u}, pr, prm.transit_margin};
+  } else {
+    const Point p_goal = target - (r + 0.5 * prm.grip_gap) * u;
+    const double approach = std::max(prm.approach_min, prm.approach_factor * ell);
+    way = Way{{p_goal - approach * u, p_goal}, pr, prm.transfer_margin};
+  }
+  std::vector<std::size_t> out;
+  for (std::size_t m = 0; m < w.a.size(); ++m) {
+    if (m == k) continue;
+    for (std::size_t s = 0; s + 1 < way.path.size(); ++s) {
+      if (segment_distance(way.path[s], way.path[s + 1], w.a[m], w.a[m]) <
+          way.radius + p_.object_radii[m] + way.margin) {
+        out.push_back(m);
+        break;
+      }
+    }
+  }
+  ways.push_back(std::move(way));
+  return out;
 }
 
 // The objects (problem indices, but `skip`) within reach of a disk of `radius` swept along a path

@@ -5,8 +5,10 @@
 // goal are parked at buffer spots chosen lazily (only when the order needs them), then the
 // object goes to its goal. Unlike the tabletop original, every step is a move of move_planner.h:
 // a transit of the robot alone and a transfer of the robot–object pair, each an OMPL motion
-// query in the current arrangement. A move that fails tries the next buffer spot, then the
-// next object in the order's ranking (a depth-first search over orders, the sets of arrived
+// query in the current arrangement, so objects also close ways, release approaches and grasps:
+// a move that fails for one of those parks the objects in question (off the way) and tries once
+// more. A move that still fails tries the next buffer spot, then the next object in the order's
+// ranking (a depth-first search over orders, the sets of arrived
 // objects that led nowhere remembered as in mRS).
 #pragma once
 
@@ -18,7 +20,7 @@ struct BufferOptions {
   // Buffer spot candidates drawn uniformly in the workspace's box per parking, and how many
   // of the acceptable ones (nearest the object first) are tried with a move.
   int spot_samples = 400;
-  int spot_tries = 4;
+  int spot_tries = 8;
 };
 
 PlanResult plan_buffer(const RearrangementProblem& problem, const BaselineParams& params,
