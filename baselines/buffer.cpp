@@ -20,6 +20,14 @@ constexpr std::uint64_t kSpotStream = 0xB5F;
 struct Way {
   std::vector<Point> path;
   double radius = 0, margin = 0;
+
+  // A disk of radius rho at x meets the swept disk (its margin included).
+  bool meets(const Point& x, double rho) const {
+    for (std::size_t s = 0; s + 1 < path.size(); ++s) {
+      if (segment_distance(path[s], path[s + 1], x, x) < radius + rho + margin) return true;
+    }
+    return false;
+  }
 };
 
 // Where the walk of the order stands: the arrangement, the robot, the moves so far and the
@@ -51,6 +59,7 @@ class BufferPlanner {
   std::vector<std::size_t> path_blockers(const Walk& w, const Point& from, const Point& to,
                                          double radius, double margin, std::size_t skip,
                                          std::vector<Way>& ways);
+  std::vector<std::size_t> objects_meeting(const Walk& w, const Way& way, std::size_t skip) const;
   std::vector<std::size_t> near_blockers(const Walk& w, std::size_t k, const Point& target,
                                          bool grasp, std::vector<Way>& ways) const;
   bool clear_way(const std::vector<std::size_t>& blockers, ObjectSet at_goal, Walk& w,
@@ -209,18 +218,17 @@ std::vector<std::size_t> BufferPlanner::near_blockers(const Walk& w, std::size_t
     const double approach = std::max(prm.approach_min, prm.approach_factor * ell);
     way = Way{{p_goal - approach * u, p_goal}, pr, prm.transfer_margin};
   }
+  ways.push_back(std::move(way));
+  return objects_meeting(w, ways.back(), k);
+}
+
+// The objects (problem indices, but `skip`) whose disks meet the way.
+std::vector<std::size_t> BufferPlanner::objects_meeting(const Walk& w, const Way& way,
+                                                        std::size_t skip) const {
   std::vector<std::size_t> out;
   for (std::size_t m = 0; m < w.a.size(); ++m) {
-    if (m == k) continue;
-    for (std::size_t s = 0; s + 1 < way.path.size(); ++s) {
-      if (segment_distance(way.path[s], way.path[s + 1], w.a[m], w.a[m]) <
-          way.radius + p_.object_radii[m] + way.margin) {
-        out.push_back(m);
-        break;
-      }
-    }
+    if (m != skip && way.meets(w.a[m], p_.object_radii[m])) out.push_back(m);
   }
-  ways.push_back(std::move(way));
   return out;
 }
 
@@ -231,20 +239,9 @@ std::vector<std::size_t> BufferPlanner::path_blockers(const Walk& w, const Point
                                                       std::size_t skip, std::vector<Way>& ways) {
   const QueryResult q = plan_motion(planner_.world(), {}, std::nullopt, radius, margin, from, to,
                                     ctx_, planner_.params().range);
-  std::vector<std::size_t> out;
-  if (q.status != QueryStatus::kSolved) return out;
+  if (q.status != QueryStatus::kSolved) return {};
   ways.push_back(Way{q.path, radius, margin});
-  for (std::size_t k = 0; k < w.a.size(); ++k) {
-    if (k == skip) continue;
-    for (std::size_t s = 0; s + 1 < q.path.size(); ++s) {
-      if (segment_distance(q.path[s], q.path[s + 1], w.a[k], w.a[k]) <
-          radius + p_.object_radii[k] + margin) {
-        out.push_back(k);
-        break;
-      }
-    }
-  }
-  return out;
+  return objects_meeting(w, ways.back(), skip);
 }
 
 // Parks the blockers (problem indices); false when one cannot be parked: it never moves, or it
@@ -269,7 +266,7 @@ bool BufferPlanner::dfs(ObjectSet at_goal, const Walk& w) {
     timeout_ = true;
     return false;
   }
-  const ObjectSet all = goal_count_ == 64 ? ~ObjectSet{0} : (ObjectSet{1} << goal_count_) - 1;
+  const ObjectSet all = all_goals(order_->graph());
   if (at_goal == all) return finish(w);
   if (failed_.count(at_goal)) return false;
   for (const std::size_t i : order_->candidates(at_goal)) {
@@ -358,11 +355,7 @@ bool BufferPlanner::spot_clear(std::size_t j, const Point& q, const Walk& w, boo
   if (!planner_.placement_free(w.a, k, q)) return false;
   const double rho = p_.object_radii[k];
   for (const Way& way : ways) {  // off the way being cleared
-    for (std::size_t s = 0; s + 1 < way.path.size(); ++s) {
-      if (segment_distance(way.path[s], way.path[s + 1], q, q) < way.radius + rho + way.margin) {
-        return false;
-      }
-    }
+    if (way.meets(q, rho)) return false;
   }
   const double keep = strict ? pair_radius(p_.robot_radius, rho, planner_.params()) : rho;
   for (std::size_t m = 0; m < p_.object_count(); ++m) {
@@ -380,7 +373,7 @@ bool BufferPlanner::finish(Walk w) {
   if (p_.robot_goal) {
     QueryResult t = planner_.transit(w.a, w.robot, *p_.robot_goal, ctx_);
     if (t.status == QueryStatus::kNoPath) {
-      const ObjectSet all = goal_count_ == 64 ? ~ObjectSet{0} : (ObjectSet{1} << goal_count_) - 1;
+      const ObjectSet all = all_goals(order_->graph());
       std::vector<Way> ways;
       const auto blockers = path_blockers(w, w.robot, *p_.robot_goal, p_.robot_radius,
                                           planner_.params().transit_margin, w.a.size(), ways);

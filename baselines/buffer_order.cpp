@@ -18,11 +18,11 @@ ObjectSet set_of(const std::vector<std::size_t>& objects) {
   return s;
 }
 
+}  // namespace
+
 ObjectSet all_goals(const DependencyGraph& g) {
   return g.goal_count == 64 ? ~ObjectSet{0} : bit(g.goal_count) - 1;
 }
-
-}  // namespace
 
 ObjectSet buffered(const DependencyGraph& g, ObjectSet at_goal) {
   ObjectSet out = 0;

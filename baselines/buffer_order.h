@@ -27,6 +27,8 @@ inline constexpr std::size_t kMaxOrderObjects = 64;
 // objects at their goals (TRLB's running-buffer minimisation). Beyond, a greedy order.
 inline constexpr std::size_t kExactOrderLimit = 16;
 
+// Every goal object: the set of a finished order.
+ObjectSet all_goals(const DependencyGraph& g);
 // The objects in buffers once the objects of `at_goal` have arrived: every blocker of an
 // arrived object that is not itself at its goal.
 ObjectSet buffered(const DependencyGraph& g, ObjectSet at_goal);
