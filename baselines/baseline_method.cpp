@@ -34,6 +34,10 @@ const char* summary_of(Method m) {
       return "B2 on the sensed map, replanning when the sensor reveals an obstacle";
     case Method::kBuffer:
       return "TRLB-style running-buffer order with lazy buffer spots, full map offline";
+    case Method::kFmrs:
+      return "fmRS: one order from the MCR dependency graph, no backtracking, full map offline";
+    case Method::kBirrtFmrs:
+      return "BiRRT over arrangements with fmRS as extension primitive, full map offline";
   }
   return "";
 }
@@ -81,7 +85,8 @@ class BaselineMethod final : public experiment::Method {
 }  // namespace
 
 void register_methods(experiment::MethodRegistry& registry) {
-  for (const Method m : {Method::kMrs, Method::kBirrt, Method::kReplan, Method::kBuffer}) {
+  for (const Method m : {Method::kMrs, Method::kBirrt, Method::kReplan, Method::kBuffer,
+                         Method::kFmrs, Method::kBirrtFmrs}) {
     registry.add(std::make_unique<BaselineMethod>(m));
   }
 }

@@ -51,6 +51,7 @@ class Birrt {
         rng_(Rng::derive(o.seed, kSamplerStream)) {
     ctx_.iterations_per_query = o.iterations_per_query;
     no_regions_.assign(p.object_count(), std::nullopt);
+    if (b.extension == BirrtOptions::Extension::kFmrs) fmrs_.emplace(planner_, b.fmrs);
   }
 
   PlanResult run() {
@@ -97,6 +98,15 @@ class Birrt {
  private:
   static constexpr std::uint64_t kSamplerStream = 0xB1;
 
+  // The extension primitive: mRS's monotone search or fmRS (BirrtOptions::extension).
+  MonotoneResult local(const Arrangement& a, std::optional<Point> robot,
+                       const std::vector<std::size_t>& which, const Arrangement& targets,
+                       const std::vector<std::optional<geometry::Polygon>>& regions,
+                       std::optional<Point> robot_goal) {
+    if (fmrs_) return fmrs_->solve(a, robot, which, targets, regions, robot_goal, ctx_);
+    return monotone_search(planner_, a, robot, which, targets, regions, robot_goal, ctx_);
+  }
+
   // A random placement of object i in arrangement a (nullopt after placement_tries misses).
   std::optional<Point> random_placement(const Arrangement& a, std::size_t i) {
     const Point lo = planner_.world().lower(), hi = planner_.world().upper();
@@ -139,8 +149,8 @@ class Birrt {
     const Node& from = tree[static_cast<std::size_t>(near)];
     // Goal tree: searched outwards from the parent, with no robot position (its transits are
     // planned when a connection is replayed forward).
-    const MonotoneResult m = monotone_search(planner_, from.a, forward ? from.robot : std::nullopt,
-                                             which, target, no_regions_, std::nullopt, ctx_);
+    const MonotoneResult m = local(from.a, forward ? from.robot : std::nullopt, which, target,
+                                   no_regions_, std::nullopt);
     if (!m.solved) return -1;
     Node c;
     c.a = m.reached;
@@ -203,9 +213,8 @@ class Birrt {
           which.push_back(i);
         }
       }
-      const MonotoneResult m =
-          monotone_search(planner_, a, robot, which, ng.a, root ? p_.goal_regions : no_regions_,
-                          root ? p_.robot_goal : std::nullopt, ctx_);
+      const MonotoneResult m = local(a, robot, which, ng.a, root ? p_.goal_regions : no_regions_,
+                                     root ? p_.robot_goal : std::nullopt);
       if (!m.solved) return false;
       moves.insert(moves.end(), m.moves.begin(), m.moves.end());
       a = m.reached;
@@ -224,6 +233,7 @@ class Birrt {
 
   const RearrangementProblem& p_;
   MovePlanner planner_;
+  std::optional<Fmrs> fmrs_;  // set for BiRRT(fmRS)
   PlannerOptions o_;
   BirrtOptions b_;
   QueryContext ctx_;

@@ -14,8 +14,15 @@
 // planning the goal-side moves forward again (each object back to the parent's place), which
 // also plans the transits the goal tree cannot know (it has no robot position). A connection
 // whose forward replay fails is discarded and the search goes on.
+//
+// BiRRT(fmRS), the method `birrt-fmrs` (Krontiris & Bekris, ICRA 2016): the same trees with
+// fmRS (fmrs.h) in place of the monotone search as the extension and connection primitive: one
+// order from the dependency graph of minimum-constraint-removal paths instead of a depth-first
+// search over orders, so a connection costs at most one move per object, and a cycle among the
+// objects makes it fail at once (the random placements of later extensions break it).
 #pragma once
 
+#include "baselines/fmrs.h"
 #include "baselines/mrs.h"
 
 namespace rearm::baselines {
@@ -26,6 +33,12 @@ struct BirrtOptions {
   // Objects within this distance (m) of their place in the other tree's node count as placed
   // when connecting (landings differ from targets by the tracking law's few mm – cm).
   double connect_tolerance = 0.05;
+  // The local planner of extensions and connections: mRS (B2, a complete monotone search) or
+  // fmRS (BiRRT(fmRS) of Krontiris & Bekris, ICRA 2016: one order from the MCR dependency
+  // graph, no backtracking; fmrs.h).
+  enum class Extension { kMrs, kFmrs };
+  Extension extension = Extension::kMrs;
+  FmrsOptions fmrs;
 };
 
 PlanResult plan_birrt(const RearrangementProblem& problem, const BaselineParams& params,

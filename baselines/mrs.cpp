@@ -111,19 +111,8 @@ MonotoneResult monotone_search(const MovePlanner& planner, const Arrangement& a,
   return out;
 }
 
-PlanResult plan_mrs(const RearrangementProblem& problem, const BaselineParams& params,
-                    const PlannerOptions& options) {
-  QueryContext ctx(options.time_limit, options.seed, options.max_queries);
-  ctx.iterations_per_query = options.iterations_per_query;
-  const MovePlanner planner(problem, params);
-  std::vector<std::size_t> which;
-  for (std::size_t i = 0; i < problem.object_count(); ++i)
-    if (problem.goals[i] && !geometry::contains(*problem.goal_regions[i], problem.start[i]))
-      which.push_back(i);
-  const MonotoneResult m =
-      monotone_search(planner, problem.start, problem.robot_start, which,
-                      problem.goal_arrangement(), problem.goal_regions, problem.robot_goal, ctx);
-  PlanResult out;
+bool search_plan_result(const MonotoneResult& m, const QueryContext& ctx, double time_limit,
+                        PlanResult& out) {
   out.planning_time_s = ctx.elapsed();
   out.subqueries = ctx.subqueries;
   out.nodes = ctx.nodes;
@@ -138,8 +127,28 @@ PlanResult plan_mrs(const RearrangementProblem& problem, const BaselineParams& p
     out.reason = "query limit of " + std::to_string(ctx.max_queries()) + " reached";
   } else if (m.timeout) {
     out.status = PlanStatus::kTimeout;
-    out.reason = "time limit of " + seconds_text(options.time_limit) + " reached";
-  } else if (m.non_monotone) {
+    out.reason = "time limit of " + seconds_text(time_limit) + " reached";
+  } else {
+    return false;
+  }
+  return true;
+}
+
+PlanResult plan_mrs(const RearrangementProblem& problem, const BaselineParams& params,
+                    const PlannerOptions& options) {
+  QueryContext ctx(options.time_limit, options.seed, options.max_queries);
+  ctx.iterations_per_query = options.iterations_per_query;
+  const MovePlanner planner(problem, params);
+  std::vector<std::size_t> which;
+  for (std::size_t i = 0; i < problem.object_count(); ++i)
+    if (problem.goals[i] && !geometry::contains(*problem.goal_regions[i], problem.start[i]))
+      which.push_back(i);
+  const MonotoneResult m =
+      monotone_search(planner, problem.start, problem.robot_start, which,
+                      problem.goal_arrangement(), problem.goal_regions, problem.robot_goal, ctx);
+  PlanResult out;
+  if (search_plan_result(m, ctx, options.time_limit, out)) return out;
+  if (m.non_monotone) {
     out.status = PlanStatus::kInfeasible;
     out.reason =
         "non-monotone instance: in every order some object's goal is occupied by an object not "

@@ -49,6 +49,12 @@ MonotoneResult monotone_search(const MovePlanner& planner, const Arrangement& a,
                                const std::vector<std::optional<geometry::Polygon>>& regions,
                                std::optional<Point> robot_goal, QueryContext& ctx);
 
+// The PlanResult of a planner that is one such search (mRS, fmRS): the counters, the plan when
+// solved, and the verdicts of a spent query budget (unsolved) or time limit (timeout). Returns
+// false when the search ended otherwise: the caller states its own verdict and reason.
+bool search_plan_result(const MonotoneResult& m, const QueryContext& ctx, double time_limit,
+                        PlanResult& out);
+
 // B1 on a problem: every object with a goal whose start is outside its goal region is moved.
 PlanResult plan_mrs(const RearrangementProblem& problem, const BaselineParams& params,
                     const PlannerOptions& options);

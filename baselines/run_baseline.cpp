@@ -36,6 +36,14 @@ PlanResult plan_with(Method m, const RearrangementProblem& p, const BaselineOpti
       return plan_mrs(p, o.params, po);
     case Method::kBuffer:
       return plan_buffer(p, o.params, po, o.buffer);
+    case Method::kFmrs:
+      return plan_fmrs(p, o.params, po, o.fmrs);
+    case Method::kBirrtFmrs: {
+      BirrtOptions b = o.birrt;
+      b.extension = BirrtOptions::Extension::kFmrs;
+      b.fmrs = o.fmrs;
+      return plan_birrt(p, o.params, po, b);
+    }
     case Method::kBirrt:
     case Method::kReplan:
       break;
@@ -286,6 +294,10 @@ const char* to_string(Method m) {
       return "replan";
     case Method::kBuffer:
       return "buffer";
+    case Method::kFmrs:
+      return "fmrs";
+    case Method::kBirrtFmrs:
+      return "birrt-fmrs";
   }
   return "?";
 }
@@ -295,7 +307,10 @@ Method method_from_string(const std::string& s) {
   if (s == "birrt") return Method::kBirrt;
   if (s == "replan") return Method::kReplan;
   if (s == "buffer") return Method::kBuffer;
-  throw Error("unknown baseline method '" + s + "' (expected mrs, birrt, replan or buffer)");
+  if (s == "fmrs") return Method::kFmrs;
+  if (s == "birrt-fmrs") return Method::kBirrtFmrs;
+  throw Error("unknown baseline method '" + s +
+              "' (expected mrs, birrt, replan, buffer, fmrs or birrt-fmrs)");
 }
 
 BaselineRecord run_baseline(const scenario::Scenario& s, const BaselineOptions& o) {

@@ -22,8 +22,8 @@
 
 namespace rearm::baselines {
 
-enum class Method { kMrs, kBirrt, kReplan, kBuffer };
-const char* to_string(Method m);                  // "mrs", "birrt", "replan", "buffer"
+enum class Method { kMrs, kBirrt, kReplan, kBuffer, kFmrs, kBirrtFmrs };
+const char* to_string(Method m);  // "mrs", "birrt", "replan", "buffer", "fmrs", "birrt-fmrs"
 Method method_from_string(const std::string& s);  // throws rearm::Error naming the choices
 
 struct BaselineOptions {
@@ -35,6 +35,7 @@ struct BaselineOptions {
   BaselineParams params;
   BirrtOptions birrt;
   BufferOptions buffer;
+  FmrsOptions fmrs;  // fmrs and birrt-fmrs (birrt.extension is set by the method)
   int iterations_per_query = 20000;
   // Motion queries for the whole trial, all replans together (0: no limit;
   // PlannerOptions::max_queries): the deterministic budget of the Monte Carlo sweeps.

@@ -86,13 +86,15 @@ int run(BaselineArgs a) {
 
 Command add_baseline(CLI::App& program) {
   CLI::App* c = program.add_subcommand(
-      "baseline", "plan and execute a scenario with an OMPL rearrangement baseline (mRS, BiRRT)");
+      "baseline",
+      "plan and execute a scenario with an OMPL rearrangement baseline (mRS, BiRRT, buffer, fmRS)");
   c->footer(kFooter);
   auto a = std::make_shared<BaselineArgs>();
   add_scenario_file(*c, a->path);
-  c->add_option("--method", a->method, "B1 (mrs), B2 (birrt), B2 replanning (replan) or buffer")
+  c->add_option("--method", a->method,
+                "B1 (mrs), B2 (birrt), B2 replanning (replan), buffer, fmrs or birrt-fmrs")
       ->required()
-      ->check(CLI::IsMember({"mrs", "birrt", "replan", "buffer"}));
+      ->check(CLI::IsMember({"mrs", "birrt", "replan", "buffer", "fmrs", "birrt-fmrs"}));
   c->add_option("--time-limit", a->options.time_limit, "planning time budget (s, default 10)")
       ->check(finite_check())
       ->check(positive_check())

@@ -13,12 +13,11 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
-#include <thread>
 
 #include "baselines/buffer_order.h"
-#include "baselines/validator.h"
 #include "core/rng.h"
 #include "scenario/scenario_io.h"
+#include "support/plan_checks.h"
 
 namespace rearm::baselines {
 namespace {
@@ -118,17 +117,10 @@ int buffer_moves(const RearrangementProblem& p, const Plan& plan) {
   return n;
 }
 
-void expect_valid(const RearrangementProblem& p, const PlanResult& r) {
-  ASSERT_EQ(r.status, PlanStatus::kSolved) << r.reason;
-  const auto v = validate_plan(p, r.plan, {});
-  EXPECT_TRUE(v.empty()) << v.size() << " violations, first: " << (v.empty() ? "" : v.front());
-  EXPECT_TRUE(p.goals_reached(r.plan.final_arrangement));
-}
-
 TEST(Buffer, SolvesTheMonotoneInstanceWithoutBuffers) {
   const auto p = problem_from_scenario(load("monotone"));
   const PlanResult r = plan_buffer(p, {}, options(1));
-  expect_valid(p, r);
+  test_support::expect_valid_plan(p, r);
   EXPECT_EQ(r.plan.moves.size(), 3u);
   EXPECT_EQ(buffer_moves(p, r.plan), 0);
 }
@@ -138,7 +130,7 @@ TEST(Buffer, ATwoCycleTakesExactlyOneBuffer) {
   s.task = "<>release(M1,l2) && <>release(M2,l1)";  // M1 onto M2's start and back
   const auto p = problem_from_scenario(s);
   const PlanResult r = plan_buffer(p, {}, options(1));
-  expect_valid(p, r);
+  test_support::expect_valid_plan(p, r);
   EXPECT_EQ(buffer_moves(p, r.plan), 1);
   EXPECT_EQ(r.plan.moves.size(), 3u);  // one to a buffer, two to their goals
 }
@@ -146,7 +138,7 @@ TEST(Buffer, ATwoCycleTakesExactlyOneBuffer) {
 TEST(Buffer, Fig5ThreeCycleTakesExactlyOneBuffer) {
   const auto p = problem_from_scenario(load("fig5"));
   const PlanResult r = plan_buffer(p, {}, options(1));
-  expect_valid(p, r);
+  test_support::expect_valid_plan(p, r);
   EXPECT_EQ(buffer_moves(p, r.plan), 1);
   EXPECT_EQ(r.plan.moves.size(), 4u);
 }
@@ -156,7 +148,7 @@ TEST(Buffer, Fig5ThreeCycleTakesExactlyOneBuffer) {
 TEST(Buffer, ClearsAWayBlockedByAnObjectWithoutGoal) {
   const auto p = problem_from_scenario(load("fig3"));
   const PlanResult r = plan_buffer(p, {}, options(1));
-  expect_valid(p, r);
+  test_support::expect_valid_plan(p, r);
   ASSERT_EQ(r.plan.moves.size(), 1u);
   // M1 leaves the passage (the walls at x = 4.7 .. 5.3 leave y in [2.5, 3.5] free).
   const Point m1 = r.plan.final_arrangement[0];
@@ -177,21 +169,7 @@ TEST(Buffer, AGoalInsideAnObstacleIsInfeasibleNeverSolved) {
 
 TEST(Buffer, SameSeedSamePlanInParallelThreads) {
   const auto p = problem_from_scenario(load("fig5"));
-  const PlanResult ref = plan_buffer(p, {}, options(7));
-  ASSERT_EQ(ref.status, PlanStatus::kSolved) << ref.reason;
-  std::vector<PlanResult> runs(4);
-  std::vector<std::thread> threads;
-  for (auto& run : runs) threads.emplace_back([&] { run = plan_buffer(p, {}, options(7)); });
-  for (auto& t : threads) t.join();
-  for (const PlanResult& r : runs) {
-    ASSERT_EQ(r.plan.moves.size(), ref.plan.moves.size());
-    EXPECT_EQ(r.queries, ref.queries);
-    for (std::size_t k = 0; k < r.plan.moves.size(); ++k) {
-      EXPECT_EQ(r.plan.moves[k].object, ref.plan.moves[k].object);
-      EXPECT_EQ(r.plan.moves[k].to, ref.plan.moves[k].to);
-      EXPECT_EQ(r.plan.moves[k].transfer, ref.plan.moves[k].transfer);
-    }
-  }
+  test_support::expect_same_plan_in_threads([&] { return plan_buffer(p, {}, options(7)); });
 }
 
 }  // namespace
