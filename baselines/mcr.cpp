@@ -7,6 +7,7 @@
 #include <optional>
 #include <queue>
 #include <tuple>
+#include <unordered_map>
 
 #include "core/error.h"
 
@@ -40,17 +41,18 @@ struct State {
   ConstraintSet set;
   double g;
   int parent;
+  bool stale = false;  // a later label at its vertex dominates it: not expanded
 };
 
 struct Label {
   ConstraintSet set;
   double g;
+  std::size_t state;
 };
 
-// Another label at the node crossed a subset of `s` at no greater length.
-bool dominated(const std::vector<Label>& labels, const ConstraintSet& s, double g) {
-  return std::any_of(labels.begin(), labels.end(),
-                     [&](const Label& l) { return (l.set & ~s).none() && l.g <= g; });
+// Label a crossed a subset of b's constraints at no greater length.
+bool dominates(const ConstraintSet& a, double ga, const ConstraintSet& b, double gb) {
+  return (a & ~b).none() && ga <= gb;
 }
 
 }  // namespace
@@ -141,6 +143,7 @@ class McrSearch {
       const std::size_t k = std::get<2>(open_.top());
       open_.pop();
       const std::size_t node = states_[k].node;
+      if (states_[k].stale) continue;
       if (node >= V_ + S_) return path(k);  // the first target popped crossed the fewest
       if (node >= V_) {
         expand_source(k);
@@ -157,29 +160,50 @@ class McrSearch {
            : node < V_ + S_ ? q_.sources[node - V_]
                             : q_.targets[node - V_ - S_];
   }
-  double heuristic(const Point& p) const {
-    double h = std::numeric_limits<double>::infinity();
-    for (const Point& t : q_.targets) h = std::min(h, (t - p).norm());
-    return h;
+  // The distance to the nearest target (admissible), computed once per node.
+  double heuristic(std::size_t node) {
+    if (node >= h_.size()) h_.resize(node + 1, -1.0);
+    if (h_[node] < 0) {
+      double h = std::numeric_limits<double>::infinity();
+      for (const Point& t : q_.targets) h = std::min(h, (t - point_of(node)).norm());
+      h_[node] = h;
+    }
+    return h_[node];
   }
   bool segment_free(const Point& a, const Point& b) const {
     return r_.world_.segment_free(a, b, q_.radius, q_.margin, {});
   }
   void push(std::size_t node, const ConstraintSet& s, double g, int parent) {
     if (node < V_) {
-      if (dominated(labels_[node], s, g) || labels_[node].size() >= McrRoadmap::kMaxLabels) return;
-      labels_[node].push_back({s, g});
+      auto& labels = labels_[node];
+      for (const Label& l : labels) {
+        if (dominates(l.set, l.g, s, g)) return;
+      }
+      std::erase_if(labels, [&](const Label& l) {
+        const bool beaten = dominates(s, g, l.set, l.g);
+        if (beaten) states_[l.state].stale = true;
+        return beaten;
+      });
+      if (labels.size() >= McrRoadmap::kMaxLabels) return;
+      labels.push_back({s, g, states_.size()});
     }
     states_.push_back({node, s, g, parent});
-    open_.emplace(s.count(), g + heuristic(point_of(node)), states_.size() - 1);
+    open_.emplace(s.count(), g + heuristic(node), states_.size() - 1);
   }
-  // The straight segment from state k to `node`, already checked against the fixed geometry.
-  void relax(std::size_t k, std::size_t node) {
+  // The straight segment from state k to `node`, already checked against the fixed geometry;
+  // `edge`: its key when a grid edge, whose crossing is then computed once per search.
+  void relax(std::size_t k, std::size_t node, std::optional<std::size_t> edge = std::nullopt) {
     const State from = states_[k];
     const Point a = point_of(from.node), b = point_of(node);
-    if (const auto x = crossing(q_, a, b)) {
-      push(node, from.set | *x, from.g + (b - a).norm(), static_cast<int>(k));
+    std::optional<ConstraintSet> x;
+    if (edge) {
+      auto [it, fresh] = crossings_.try_emplace(*edge);
+      if (fresh) it->second = crossing(q_, a, b);
+      x = it->second;
+    } else {
+      x = crossing(q_, a, b);
     }
+    if (x) push(node, from.set | *x, from.g + (b - a).norm(), static_cast<int>(k));
   }
   // A source joins the grid vertices around it, or a target within three steps directly.
   void expand_source(std::size_t k) {
@@ -204,7 +228,9 @@ class McrSearch {
       const std::size_t w = static_cast<std::size_t>(nj) * r_.nx_ + static_cast<std::size_t>(ni);
       if (r_.vertex_free(c_, w, q_.radius, q_.margin) &&
           r_.edge_free(c_, node, dir, q_.radius, q_.margin))
-        relax(k, w);
+        relax(k, w,
+              dir < 4 ? 4 * node + static_cast<std::size_t>(dir)
+                      : 4 * w + static_cast<std::size_t>(dir - 4));
     }
     if (const auto it = joins_.find(node); it != joins_.end()) {
       for (const std::size_t t : it->second) {
@@ -230,6 +256,8 @@ class McrSearch {
   std::size_t V_, S_;
   std::vector<std::vector<Label>> labels_;
   std::map<std::size_t, std::vector<std::size_t>> joins_;  // grid vertex -> targets it joins
+  std::unordered_map<std::size_t, std::optional<ConstraintSet>> crossings_;  // grid edges
+  std::vector<double> h_;
   std::vector<State> states_;
   std::priority_queue<Key, std::vector<Key>, std::greater<>> open_;
 };

@@ -7,17 +7,35 @@
 //  - Plan/<method>/<scenario>: planning time of B1 and B2 on the monotone instance and of B2
 //    on Fig. 5's cyclic shift (full map, seed = iteration index so the sample is a spread of
 //    seeds), with motion queries and tree nodes as counters.
+//  - Crowded/<method>/<N>: planning time (no execution) of every planner on crowded rooms:
+//    N = 4, 8, 16 objects of radius 0.25 m covering 5% of the floor (the footprint rule sizes
+//    the room), sparse fixed obstacles (target density 0.05), four instances per N (seeds 1-4,
+//    random goals for odd seeds, the cyclic shift for even ones), one per iteration, at the
+//    studies' budget of 3,000 motion queries. Counters: solved (fraction), queries (mean).
+//    The family compiles against an earlier revision too (scripts/bench_baselines.sh OLD
+//    builds this file there): planners that revision lacks are left out.
 // Run from the repository root (scripts/bench_baselines.sh): the scenario files are read from
 // experiments/scenarios.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
 #include <chrono>
+#include <map>
 #include <string>
+#include <vector>
 
 #include "baselines/birrt.h"
 #include "baselines/mrs.h"
+#include "scenario/random_instance.h"
 #include "scenario/scenario_io.h"
+#if __has_include("baselines/buffer.h")
+#include "baselines/buffer.h"
+#define REARM_BENCH_HAS_BUFFER 1
+#endif
+#if __has_include("baselines/fmrs.h")
+#include "baselines/fmrs.h"
+#define REARM_BENCH_HAS_FMRS 1
+#endif
 
 namespace rearm::baselines {
 namespace {
@@ -72,6 +90,83 @@ BENCHMARK_CAPTURE(Plan, mrs_monotone, false, "monotone")->Unit(benchmark::kMilli
 BENCHMARK_CAPTURE(Plan, birrt_monotone, true, "monotone")->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(Plan, birrt_fig5, true, "fig5")->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(Plan, mrs_fig5, false, "fig5")->Unit(benchmark::kMillisecond);
+
+enum class Planner { kMrs, kBirrt, kBuffer, kFmrs, kBirrtFmrs };
+
+// The crowded instances of one N, built once per process (outside the timed loop).
+const std::vector<RearrangementProblem>& crowded(int n) {
+  static std::map<int, std::vector<RearrangementProblem>> cache;
+  auto& out = cache[n];
+  for (std::uint64_t seed = 1; out.size() < 4; ++seed) {
+    scenario::InstanceSpec spec;
+    spec.objects = n;
+    spec.obstacle_density = 0.05;
+    spec.footprint_density = 0.05;
+    spec.goal_class = seed % 2 ? scenario::GoalClass::kRandom : scenario::GoalClass::kCyclic;
+    spec.seed = seed;
+    out.push_back(problem_from_scenario(scenario::random_instance(spec)));
+  }
+  return out;
+}
+
+PlanResult plan_crowded(Planner planner, const RearrangementProblem& p) {
+  PlannerOptions o;
+  o.time_limit = 300;  // a safety net: the query budget ends every run first
+  o.max_queries = 3000;
+  o.seed = 1;
+  switch (planner) {
+    case Planner::kMrs:
+      return plan_mrs(p, {}, o);
+    case Planner::kBirrt:
+      return plan_birrt(p, {}, o);
+#ifdef REARM_BENCH_HAS_BUFFER
+    case Planner::kBuffer:
+      return plan_buffer(p, {}, o);
+#endif
+#ifdef REARM_BENCH_HAS_FMRS
+    case Planner::kFmrs:
+      return plan_fmrs(p, {}, o);
+    case Planner::kBirrtFmrs: {
+      BirrtOptions b;
+      b.extension = BirrtOptions::Extension::kFmrs;
+      return plan_birrt(p, {}, o, b);
+    }
+#endif
+    default:
+      break;
+  }
+  return {};
+}
+
+void Crowded(benchmark::State& state, Planner planner) {
+  const auto& problems = crowded(static_cast<int>(state.range(0)));
+  std::size_t k = 0;
+  long queries = 0, solved = 0, runs = 0;
+  for (auto _ : state) {
+    const PlanResult r = plan_crowded(planner, problems[k++ % problems.size()]);
+    queries += r.queries;
+    solved += r.status == PlanStatus::kSolved;
+    ++runs;
+  }
+  state.counters["solved"] = double(solved) / double(runs);
+  state.counters["queries"] = double(queries) / double(runs);
+}
+#define REARM_CROWDED(name, planner)        \
+  BENCHMARK_CAPTURE(Crowded, name, planner) \
+      ->Arg(4)                              \
+      ->Arg(8)                              \
+      ->Arg(16)                             \
+      ->Iterations(4)                       \
+      ->Unit(benchmark::kMillisecond)
+REARM_CROWDED(mrs, Planner::kMrs);
+REARM_CROWDED(birrt, Planner::kBirrt);
+#ifdef REARM_BENCH_HAS_BUFFER
+REARM_CROWDED(buffer, Planner::kBuffer);
+#endif
+#ifdef REARM_BENCH_HAS_FMRS
+REARM_CROWDED(fmrs, Planner::kFmrs);
+REARM_CROWDED(birrt_fmrs, Planner::kBirrtFmrs);
+#endif
 
 }  // namespace
 }  // namespace rearm::baselines
