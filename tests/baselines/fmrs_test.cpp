@@ -201,7 +201,7 @@ TEST(Fmrs, AGoalInsideAnObstacleIsNeverSolved) {
   EXPECT_NE(f.reason.find("M1"), std::string::npos) << f.reason;
   BirrtOptions b;
   b.extension = BirrtOptions::Extension::kFmrs;
-  const PlanResult r = plan_birrt(p, {}, options(1, 300), b);
+  const PlanResult r = plan_birrt(p, {}, options(1, 60), b);
   EXPECT_NE(r.status, PlanStatus::kSolved);
   EXPECT_TRUE(r.plan.moves.empty());
 }
