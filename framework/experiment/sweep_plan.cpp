@@ -24,15 +24,16 @@ int parse_int(const std::string& text, const std::string& whole) {
   return v;
 }
 
-scenario::InstanceSpec cell_spec(const scenario::SweepFile& f, scenario::GoalClass c, int n,
-                                 double density, double unknown, bool round) {
+scenario::InstanceSpec cell_spec(const scenario::SweepFile& f, const scenario::WorkspaceRule& w,
+                                 scenario::GoalClass c, int n, double density, double unknown,
+                                 bool round) {
   scenario::InstanceSpec spec = f.instance;
   spec.goal_class = c;
   spec.objects = n;
   spec.obstacle_density = density;
   spec.unknown_fraction = unknown;
   spec.round_unknown = round;
-  spec.width = spec.height = f.workspace.side_for(n, spec.object_radius);
+  spec.width = spec.height = w.side_for(n, spec.object_radius);
   return spec;
 }
 
@@ -83,36 +84,38 @@ SweepPlan plan_sweep(const scenario::SweepFile& f, const MethodRegistry& methods
   }
   SweepPlan plan;
   plan.name = f.name;
+  const std::vector<scenario::WorkspaceRule> workspaces = f.workspaces();
   for (const scenario::GoalClass c : f.classes)
     for (const int n : f.objects)
-      for (const double density : f.densities)
-        for (const double unknown : f.unknown_fractions)
-          for (const bool round : f.round_unknown)
-            for (int rep = 0; rep < f.seeds; ++rep) {
-              InstanceJob job;
-              job.index = plan.instances.size();
-              job.spec = cell_spec(f, c, n, density, unknown, round);
-              job.spec.seed = instance_seed(f.base_seed, n, rep);
-              job.rep = rep;
-              job.workspace_rule = f.workspace.describe();
-              for (const std::string& m : f.methods) {
-                // "NAME@K": its own budget; the seed is NAME's, so one planner at two budgets
-                // runs the same search, cut at two points.
-                const scenario::MethodEntry e = scenario::method_entry(m);
-                TrialJob t;
-                t.index = plan.trials.size();
-                t.instance = job.index;
-                t.settings = TrialSettings{m,
-                                           job.spec,
-                                           rep,
-                                           job.workspace_rule,
-                                           planner_seed(job.spec.seed, e.method),
-                                           f.time_limit,
-                                           e.query_limit.value_or(f.query_limit)};
-                plan.trials.push_back(std::move(t));
+      for (const scenario::WorkspaceRule& w : workspaces)
+        for (const double density : f.densities)
+          for (const double unknown : f.unknown_fractions)
+            for (const bool round : f.round_unknown)
+              for (int rep = 0; rep < f.seeds; ++rep) {
+                InstanceJob job;
+                job.index = plan.instances.size();
+                job.spec = cell_spec(f, w, c, n, density, unknown, round);
+                job.spec.seed = instance_seed(f.base_seed, n, rep);
+                job.rep = rep;
+                job.workspace_rule = w.describe();
+                for (const std::string& m : f.methods) {
+                  // "NAME@K": its own budget; the seed is NAME's, so one planner at two budgets
+                  // runs the same search, cut at two points.
+                  const scenario::MethodEntry e = scenario::method_entry(m);
+                  TrialJob t;
+                  t.index = plan.trials.size();
+                  t.instance = job.index;
+                  t.settings = TrialSettings{m,
+                                             job.spec,
+                                             rep,
+                                             job.workspace_rule,
+                                             planner_seed(job.spec.seed, e.method),
+                                             f.time_limit,
+                                             e.query_limit.value_or(f.query_limit)};
+                  plan.trials.push_back(std::move(t));
+                }
+                plan.instances.push_back(std::move(job));
               }
-              plan.instances.push_back(std::move(job));
-            }
   plan.total_trials = plan.trials.size();
   return plan;
 }

@@ -1,5 +1,6 @@
 // A sweep file expanded into its instances and trials (experiments/sweeps/README.md):
-// cells = classes × object counts × target densities × unknown fractions × unknown shapes, each
+// cells = classes × object counts × workspaces (footprints) × target densities × unknown
+// fractions × unknown shapes, each
 // with `seeds` repetitions (one instance each), each instance run by every method (one trial
 // each). Indices are canonical (that order), so a trial's index, seeds and settings depend on
 // the sweep file alone — not on the thread count, the shard or the order trials finish in.

@@ -19,6 +19,7 @@
 #include "experiment/provenance.h"
 #include "experiment/trial_columns.h"
 #include "experiment/trial_log.h"
+#include "scenario/instance_difficulty.h"
 #include "scenario/random_instance.h"
 #include "scenario/scenario_io.h"
 
@@ -56,6 +57,7 @@ InstanceInfo info_of(const scenario::GeneratedInstance& g) {
   info.footprint_density = g.footprint_density;
   info.familiar = static_cast<int>(g.scenario.familiar.size());
   info.unknown = static_cast<int>(g.scenario.unknown.size());
+  info.difficulty = scenario::instance_difficulty(g.scenario, g.goals);
   return info;
 }
 

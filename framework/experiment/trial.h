@@ -8,6 +8,7 @@
 #include <string_view>
 
 #include "executive/executive.h"
+#include "scenario/instance_difficulty.h"
 #include "scenario/random_instance.h"
 
 namespace rearm::experiment {
@@ -97,7 +98,8 @@ struct InstanceInfo {
   std::string name;  // the scenario's name; its file is instances/<name>.yaml
   double achieved_density = 0;
   double footprint_density = 0;
-  int familiar = 0, unknown = 0;  // obstacle counts
+  int familiar = 0, unknown = 0;            // obstacle counts
+  scenario::InstanceDifficulty difficulty;  // goal cycles, occupied goals, walled-in objects
 };
 
 struct Provenance {

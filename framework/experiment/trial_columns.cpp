@@ -52,6 +52,9 @@ void settings_fields(const TrialRecord& r, std::vector<std::string>& f) {
   f.push_back(i.round_unknown ? "round" : "polygon");
   f.push_back(integer(r.instance.familiar));
   f.push_back(integer(r.instance.unknown));
+  f.push_back(integer(r.instance.difficulty.goal_cycle_objects));
+  f.push_back(integer(r.instance.difficulty.goals_occupied));
+  f.push_back(integer(r.instance.difficulty.walled_in));
   f.push_back(integer(s.rep));
   f.push_back(std::to_string(i.seed));
   f.push_back(std::to_string(s.planner_seed));
@@ -115,6 +118,9 @@ const std::vector<std::string>& trial_columns() {
                                                    "unknown_shapes",
                                                    "familiar_obstacles",
                                                    "unknown_obstacles",
+                                                   "goal_cycle_objects",
+                                                   "goals_occupied",
+                                                   "walled_in",
                                                    "rep",
                                                    "instance_seed",
                                                    "planner_seed",

@@ -707,6 +707,7 @@ class Generator {
     g.region_side = l_.region_side;
     g.point_spacing = l_.spacing;
     g.redraws = redraw_;
+    g.goals = goals_;
     if (pocket_) {
       g.pocket.present = true;
       g.pocket.walls = g.scenario.familiar.front().name;

@@ -90,6 +90,7 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "geometry/polygon.h"
 #include "scenario/scenario.h"
@@ -151,14 +152,15 @@ struct SealedPocket {
 
 struct GeneratedInstance {
   Scenario scenario;
-  double achieved_density = 0;    // fixed-obstacle area (shoelace) / workspace area
-  double footprint_density = 0;   // objects' disk area (B1 included) / workspace area
-  bool density_reached = false;   // achieved_density >= spec.obstacle_density
-  bool dense = false;             // the dense spacing rules were in force (see above)
-  double region_side = 0;         // s in use
-  double point_spacing = 0;       // d in use (Euclidean sparse, Chebyshev dense)
-  int redraws = 0;                // redraws after a failed exact check
-  SolvabilityReport solvability;  // check_solvability(scenario); always solvable
+  double achieved_density = 0;         // fixed-obstacle area (shoelace) / workspace area
+  double footprint_density = 0;        // objects' disk area (B1 included) / workspace area
+  bool density_reached = false;        // achieved_density >= spec.obstacle_density
+  bool dense = false;                  // the dense spacing rules were in force (see above)
+  double region_side = 0;              // s in use
+  double point_spacing = 0;            // d in use (Euclidean sparse, Chebyshev dense)
+  int redraws = 0;                     // redraws after a failed exact check
+  std::vector<geometry::Point> goals;  // M1..MN's goal points (the centres of l1..lN)
+  SolvabilityReport solvability;       // check_solvability(scenario); always solvable
   SealedPocket pocket;
 };
 

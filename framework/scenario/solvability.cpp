@@ -179,6 +179,25 @@ SolvabilityReport check_solvability(const Scenario& s) {
   return rep;
 }
 
+std::vector<bool> walled_in_objects(const Scenario& s) {
+  const double r = s.robot.radius;
+  const double inner = r / (1 + kSealSlack);
+  std::vector<Polygon> objects;
+  for (const Object& o : s.objects) {
+    const geometry::Disk d{o.disk.center, o.disk.radius + inner};
+    objects.push_back(geometry::regular_polygon(d, geometry::kDiskPolygonSides, false));
+  }
+  const RegionSet sup =
+      geometry::subtract(geometry::to_set(s.workspace), grown(fixed_obstacles(s), inner, objects));
+  const std::optional<std::size_t> k = component_of(sup, s.robot.start);
+  std::vector<bool> out;
+  for (const Object& o : s.objects) {
+    // Robot grasp positions: the pair's grasp_positions for a robot of radius r + ρ.
+    out.push_back(!k || !has_grasp_in(sup, *k, o.disk.center, r + o.disk.radius));
+  }
+  return out;
+}
+
 SealReport check_seal(const Scenario& s, std::size_t object, std::size_t blocker,
                       const Point& goal) {
   if (object >= s.objects.size() || blocker >= s.objects.size() || object == blocker) {

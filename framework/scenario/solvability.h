@@ -50,6 +50,7 @@
 #include <cstddef>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "geometry/polygon.h"
 #include "scenario/scenario.h"
@@ -83,6 +84,15 @@ struct SolvabilityReport {
 // The certificate above for a validated scenario (scenario::validate); throws rearm::Error
 // for a scenario without objects.
 SolvabilityReport check_solvability(const Scenario& s);
+
+// For each object of a validated scenario: true when it is walled in at the start, that is,
+// when the robot, with every object where it stands, reaches from its start none of the
+// object's kGraspDirections robot grasp positions p + (r + ρ + kGripOffset)·u. Tested in a
+// superset of the robot's freespace (W − round dilations of the fixed obstacles by r⁻ − the
+// inscribed kDiskPolygonSides-gons of radius ρ_j + r⁻ about every object, r⁻ = r / (1 +
+// kSealSlack)), as check_seal does, so "walled in" is a proof; with the objects removed the
+// certificate above reaches every object, so the walls are other objects.
+std::vector<bool> walled_in_objects(const Scenario& s);
 
 struct SealReport {
   bool sealed = false;  // the object's pair cannot reach the goal past the blocker

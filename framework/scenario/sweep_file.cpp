@@ -3,9 +3,11 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <set>
 #include <string>
 #include <system_error>
@@ -116,6 +118,26 @@ WorkspaceRule read_workspace(Reader& r, const YAML::Node& n) {
   return w;
 }
 
+// `footprint_densities: [...]`: the footprint rule per value; `workspace` may then only give
+// min_side.
+void read_footprints(Reader& r, const YAML::Node& list, const std::optional<YAML::Node>& workspace,
+                     SweepFile& s) {
+  s.footprints = list_of<double>(r, list, "footprint_densities",
+                                 [&](const YAML::Node& n, const std::string& p) {
+                                   return in_range(r, n, p, 0, kMaxFootprint, true);
+                                 });
+  s.workspace.kind = WorkspaceRule::Kind::kFootprint;
+  s.workspace.footprint_density = s.footprints.front();
+  if (!workspace) return;
+  const Fields w(r, *workspace, "workspace", {"side", "sides", "footprint_density", "min_side"});
+  if (w.find("side") || w.find("sides") || w.find("footprint_density")) {
+    r.fail("workspace", "with footprint_densities, workspace may only give min_side");
+  }
+  if (const auto v = w.find("min_side")) {
+    s.workspace.min_side = in_range(r, *v, "workspace.min_side", 0, kMaxSide);
+  }
+}
+
 void read_instance(Reader& r, const YAML::Node& n, InstanceSpec& spec) {
   const Fields f(r, n, "instance",
                  {"robot_radius", "object_radius", "region_side", "sensor_range", "passage_margin",
@@ -207,8 +229,8 @@ void read_lists(Reader& r, const Fields& f, SweepFile& s) {
 SweepFile read_sweep(Reader& r, const YAML::Node& doc) {
   const Fields f(r, doc, "",
                  {"name", "description", "methods", "classes", "objects", "densities", "workspace",
-                  "unknown_fraction", "unknown_shapes", "seeds", "time_limit", "query_limit",
-                  "base_seed", "instance"});
+                  "footprint_densities", "unknown_fraction", "unknown_shapes", "seeds",
+                  "time_limit", "query_limit", "base_seed", "instance"});
   SweepFile s;
   s.source = r.source();
   s.name = r.text(f.require("name"), "name");
@@ -220,7 +242,11 @@ SweepFile read_sweep(Reader& r, const YAML::Node& doc) {
   }
   if (const auto v = f.find("description")) s.description = r.text(*v, "description");
   read_lists(r, f, s);
-  s.workspace = read_workspace(r, f.require("workspace"));
+  if (const auto v = f.find("footprint_densities")) {
+    read_footprints(r, *v, f.find("workspace"), s);
+  } else {
+    s.workspace = read_workspace(r, f.require("workspace"));
+  }
   if (s.workspace.kind == WorkspaceRule::Kind::kSidePerCount) {
     for (int n : s.objects) {
       if (!s.workspace.per_count.count(n)) {
@@ -238,12 +264,16 @@ SweepFile read_sweep(Reader& r, const YAML::Node& doc) {
   if (const auto v = f.find("base_seed")) s.base_seed = unsigned64(r, *v, "base_seed");
   if (const auto v = f.find("instance")) read_instance(r, *v, s.instance);
   if (s.workspace.kind == WorkspaceRule::Kind::kFootprint) {
-    for (int n : s.objects) {
-      const double side = s.workspace.side_for(n, s.instance.object_radius);
-      if (!(side <= kMaxSide)) {
-        r.fail("workspace.footprint_density", "gives a side of " + num(side) + " m for " +
-                                                  std::to_string(n) + " objects, more than " +
-                                                  num(kMaxSide) + " m");
+    const std::string key =
+        s.footprints.empty() ? "workspace.footprint_density" : "footprint_densities";
+    for (const WorkspaceRule& w : s.workspaces()) {
+      for (int n : s.objects) {
+        const double side = w.side_for(n, s.instance.object_radius);
+        if (!(side <= kMaxSide)) {
+          r.fail(key, "footprint " + num(w.footprint_density) + " gives a side of " + num(side) +
+                          " m for " + std::to_string(n) + " objects, more than " + num(kMaxSide) +
+                          " m");
+        }
       }
     }
   }
@@ -287,9 +317,21 @@ std::string WorkspaceRule::describe() const {
   return "";
 }
 
+std::vector<WorkspaceRule> SweepFile::workspaces() const {
+  if (footprints.empty()) return {workspace};
+  std::vector<WorkspaceRule> out;
+  for (const double f : footprints) {
+    WorkspaceRule w = workspace;
+    w.footprint_density = f;
+    out.push_back(w);
+  }
+  return out;
+}
+
 std::size_t SweepFile::trial_count() const {
-  return classes.size() * objects.size() * densities.size() * unknown_fractions.size() *
-         round_unknown.size() * static_cast<std::size_t>(seeds) * methods.size();
+  return classes.size() * objects.size() * std::max<std::size_t>(1, footprints.size()) *
+         densities.size() * unknown_fractions.size() * round_unknown.size() *
+         static_cast<std::size_t>(seeds) * methods.size();
 }
 
 SweepFile parse_sweep_file(const std::string& yaml, const std::string& source) {

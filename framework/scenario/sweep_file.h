@@ -1,9 +1,10 @@
 // Sweep files (experiments/sweeps/README.md): one Monte Carlo study per YAML file — the methods,
 // the goal classes, the object counts, the target obstacle densities, the workspace size per
-// object count, the unknown-obstacle fractions and shapes, the repetitions per cell, the time
-// limit per trial and the base seed. The experiment layer expands it into instances and trials
-// (experiment/sweep_plan.h). Read with the same strict YAML rules as the scenario files
-// (yaml_internal.h) and validated the same way: errors name the file, the key and the reason.
+// object count (or the objects' footprint densities, a dimension of their own), the
+// unknown-obstacle fractions and shapes, the repetitions per cell, the time limit per trial and the
+// base seed. The experiment layer expands it into instances and trials (experiment/sweep_plan.h).
+// Read with the same strict YAML rules as the scenario files (yaml_internal.h) and validated the
+// same way: errors name the file, the key and the reason.
 #pragma once
 
 #include <cstdint>
@@ -46,6 +47,9 @@ struct SweepFile {
   std::vector<int> objects;
   std::vector<double> densities;  // target obstacle densities
   WorkspaceRule workspace;
+  // The objects' footprint densities, a grid dimension (`footprint_densities`): each a
+  // kFootprint rule with workspace.min_side. Empty: the workspace rule alone.
+  std::vector<double> footprints;
   std::vector<double> unknown_fractions;  // probability that an obstacle is unknown
   std::vector<bool> round_unknown;        // unknown shapes: true = ellipses, false = polygons
   int seeds = 10;                         // repetitions per cell
@@ -54,6 +58,8 @@ struct SweepFile {
   std::uint64_t base_seed = 0;
   InstanceSpec instance;  // the generator's other settings (radii, region side, ...)
 
+  // The workspace rule of each footprint, in file order, or the one rule.
+  std::vector<WorkspaceRule> workspaces() const;
   // Cells × repetitions × methods.
   std::size_t trial_count() const;
 };

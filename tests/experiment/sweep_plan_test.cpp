@@ -115,6 +115,39 @@ TEST(SweepPlan, MethodEntriesCarryTheirOwnBudget) {
   EXPECT_THROW(plan_sweep(f, registry()), scenario::ScenarioError);
 }
 
+// A footprint list of one value plans the very trials of the single footprint rule (same keys,
+// seeds and sides), so committed sweeps keep their rows; a longer list adds cells after the
+// object count, each footprint's instances sharing the seeds of their N.
+TEST(SweepPlan, FootprintDensitiesAddCellsAndKeepTheSingleRulesTrials) {
+  const std::string head =
+      "name: f\nmethods: [rearm, birrt]\nclasses: [random, cyclic]\nobjects: [2, 8]\n"
+      "densities: [0.05]\nseeds: 3\n";
+  const SweepPlan one = plan_sweep(
+      scenario::parse_sweep_file(head + "workspace: {footprint_density: 0.05}\n"), registry());
+  const SweepPlan list =
+      plan_sweep(scenario::parse_sweep_file(head + "footprint_densities: [0.05]\n"), registry());
+  ASSERT_EQ(one.trials.size(), list.trials.size());
+  for (std::size_t k = 0; k < one.trials.size(); ++k) {
+    EXPECT_EQ(key_column(one.trials[k].settings), key_column(list.trials[k].settings));
+    EXPECT_EQ(one.trials[k].settings.workspace_rule, list.trials[k].settings.workspace_rule);
+  }
+  const SweepPlan three = plan_sweep(
+      scenario::parse_sweep_file(head + "footprint_densities: [0.01, 0.05, 0.1]\n"), registry());
+  ASSERT_EQ(three.trials.size(), 3 * one.trials.size());
+  std::map<std::pair<int, int>, std::set<std::uint64_t>> seeds;  // (N, rep) -> instance seeds
+  std::set<double> sides;
+  for (const InstanceJob& j : three.instances) {
+    seeds[{j.spec.objects, j.rep}].insert(j.spec.seed);
+    sides.insert(j.spec.width);
+  }
+  for (const auto& [cell, s] : seeds) EXPECT_EQ(s.size(), 1u);
+  EXPECT_EQ(sides.size(), 6u);  // two N x three footprints
+  // The first cell: random goals, N = 2, footprint 0.01, its three repetitions.
+  EXPECT_EQ(three.instances[0].workspace_rule, "footprint 0.01");
+  EXPECT_EQ(three.instances[3].workspace_rule, "footprint 0.05");
+  EXPECT_EQ(three.instances[3].spec.objects, 2);
+}
+
 TEST(SweepPlan, UnknownMethodsNameTheirKey) {
   scenario::SweepFile f = file();
   f.methods.push_back("rrtstar");

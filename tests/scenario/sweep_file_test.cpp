@@ -82,6 +82,31 @@ void expect_error(const std::string& yaml, const std::string& key, const std::st
 const std::string kBase =
     "name: s\nmethods: [rearm]\nclasses: [random]\nobjects: [1]\ndensities: [0.1]\n";
 
+// `footprint_densities`: one footprint rule per value, the side sqrt(N pi rho^2 / F) per cell
+// (never below workspace.min_side), and the trials multiplied by the number of footprints.
+TEST(SweepFile, FootprintDensitiesAreAGridDimension) {
+  const std::string head =
+      "name: s\nmethods: [rearm]\nclasses: [random]\nobjects: [4, 8]\ndensities: [0.1]\n";
+  const SweepFile f = parse_sweep_file(
+      head + "footprint_densities: [0.01, 0.05, 0.12]\nworkspace: {min_side: 3}\n");
+  ASSERT_EQ(f.workspaces().size(), 3u);
+  const double area = std::numbers::pi * 0.25 * 0.25;  // the default object radius
+  EXPECT_NEAR(f.workspaces()[0].side_for(8, 0.25), std::sqrt(8 * area / 0.01), 1e-12);
+  EXPECT_NEAR(f.workspaces()[1].side_for(8, 0.25), std::sqrt(8 * area / 0.05), 1e-12);
+  EXPECT_EQ(f.workspaces()[2].side_for(4, 0.25), 3);  // sqrt(4 area / 0.12) = 2.6 m < 3 m
+  EXPECT_EQ(f.workspaces()[2].describe(), "footprint 0.12 (>= 3 m)");
+  EXPECT_EQ(f.trial_count(),
+            3 * parse_sweep_file(head + "workspace: {footprint_density: 0.05}\n").trial_count());
+  expect_error(kBase + "footprint_densities: [0.05]\nworkspace: {side: 8}\n", "workspace",
+               "only give min_side");
+  expect_error(kBase + "footprint_densities: [0.05, 0.05]\n", "footprint_densities[1]", "repeated");
+  expect_error(kBase + "footprint_densities: [0.05, 0.5]\n", "footprint_densities[1]",
+               "must be in");
+  expect_error(kBase + "footprint_densities: [0]\n", "footprint_densities[0]", "must be in");
+  expect_error(kBase + "footprint_densities: [0.05, 0.000001]\n", "footprint_densities",
+               "gives a side of 443.");
+}
+
 TEST(SweepFile, BadInputNamesTheKey) {
   expect_error(kBase, "workspace", "required key is missing");
   expect_error(kBase + "workspace: {side: 10}\nseed: 3\n", "seed", "unknown key");
