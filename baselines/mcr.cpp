@@ -89,13 +89,16 @@ bool McrRoadmap::vertex_free(Cache& c, std::size_t v, double radius, double marg
   return c.vertex[v] == 1;
 }
 
-// The edge from v in direction dir (0..7); the neighbour must exist.
-bool McrRoadmap::edge_free(Cache& c, std::size_t v, int dir, double radius, double margin) const {
-  const auto& d = kDirs[static_cast<std::size_t>(dir)];
-  const std::size_t w =
-      v + static_cast<std::size_t>(static_cast<long>(d[1]) * static_cast<long>(nx_) + d[0]);
-  const std::size_t key =
-      dir < 4 ? 4 * v + static_cast<std::size_t>(dir) : 4 * w + static_cast<std::size_t>(dir - 4);
+// The cache index of the edge from v to its neighbour w in direction dir (0..7): directions
+// 0..3 are stored at v, 4..7 as their reverses at w.
+std::size_t McrRoadmap::edge_key(std::size_t v, std::size_t w, int dir) {
+  return dir < 4 ? 4 * v + static_cast<std::size_t>(dir)
+                 : 4 * w + static_cast<std::size_t>(dir - 4);
+}
+
+bool McrRoadmap::edge_free(Cache& c, std::size_t v, std::size_t w, int dir, double radius,
+                           double margin) const {
+  const std::size_t key = edge_key(v, w, dir);
   if (c.edge[key] == 0) {
     c.edge[key] = world_.segment_free(position(v), position(w), radius, margin, {}) ? 1 : 2;
   }
@@ -227,10 +230,8 @@ class McrSearch {
         continue;
       const std::size_t w = static_cast<std::size_t>(nj) * r_.nx_ + static_cast<std::size_t>(ni);
       if (r_.vertex_free(c_, w, q_.radius, q_.margin) &&
-          r_.edge_free(c_, node, dir, q_.radius, q_.margin))
-        relax(k, w,
-              dir < 4 ? 4 * node + static_cast<std::size_t>(dir)
-                      : 4 * w + static_cast<std::size_t>(dir - 4));
+          r_.edge_free(c_, node, w, dir, q_.radius, q_.margin))
+        relax(k, w, McrRoadmap::edge_key(node, w, dir));
     }
     if (const auto it = joins_.find(node); it != joins_.end()) {
       for (const std::size_t t : it->second) {

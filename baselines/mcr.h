@@ -64,7 +64,9 @@ class McrRoadmap {
   };
   Cache& cache(double clearance) const;
   bool vertex_free(Cache& c, std::size_t v, double radius, double margin) const;
-  bool edge_free(Cache& c, std::size_t v, int dir, double radius, double margin) const;
+  static std::size_t edge_key(std::size_t v, std::size_t w, int dir);
+  bool edge_free(Cache& c, std::size_t v, std::size_t w, int dir, double radius,
+                 double margin) const;
   geometry::Point position(std::size_t v) const;
   std::vector<std::size_t> near_vertices(const geometry::Point& p) const;
 
