@@ -6,6 +6,8 @@ set -euo pipefail
 PACKAGES=(
   # toolchain
   build-essential cmake git python3 pkg-config ca-certificates
+  # faster builds: Ninja (scripts/test.sh's generator) and the lld linker (CMakeLists.txt)
+  ninja-build lld
   # libraries (design card)
   libeigen3-dev libcgal-dev libgmp-dev libmpfr-dev libbox2d-dev libompl-dev
   libboost-filesystem-dev libboost-serialization-dev libboost-system-dev

@@ -17,6 +17,8 @@ python3 scripts/check_layering.py
 # Every C++ file clang-formatted; no function of the library over 100 lines.
 bash scripts/check_style.sh
 JOBS=$(nproc)
+# Ninja for new build folders (an existing folder keeps the generator it was made with).
+if [ -z "${CMAKE_GENERATOR:-}" ] && command -v ninja >/dev/null; then export CMAKE_GENERATOR=Ninja; fi
 BUILD=${BUILD:-build}
 cmake -S . -B "$BUILD" -DCMAKE_BUILD_TYPE=Release -DREARM_WERROR=ON -DREARM_SANITIZE=OFF \
   -DREARM_BUILD_TESTS=ON -DREARM_BUILD_BENCH=ON -DREARM_TESTS=
