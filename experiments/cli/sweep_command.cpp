@@ -1,6 +1,7 @@
 // rearm sweep: the Monte Carlo study (experiments/sweeps/README.md) — a thin shell over the
 // experiment layer: load the sweep file, wire rearm and the baselines into the method registry,
 // run (one shard of) the sweep; merge shards; report (tables, plots, OMPL benchmark logs).
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -11,6 +12,8 @@
 #include "baselines/baseline_method.h"
 #include "command.h"
 #include "core/error.h"
+#include "core/file_io.h"
+#include "experiment/cell_check.h"
 #include "experiment/csv.h"
 #include "experiment/ompl_log.h"
 #include "experiment/progress.h"
@@ -35,6 +38,10 @@ constexpr const char* kFooter =
     "same --out runs only the trials that are missing (a row cut by an interruption is dropped\n"
     "and run again). Every instance is kept as DIR/instances/<name>.yaml for rearm run and\n"
     "rearm baseline. Progress goes to stderr.\n"
+    "Before any trial, every instance of the cells to run is generated: a cell with an instance\n"
+    "that cannot be generated or misses its target obstacle density by more than 0.02 is\n"
+    "refused, and the sweep stops listing the refused cells (`refused_cells: skip` in the file\n"
+    "runs the others); the verdicts go to DIR/cells.csv. --check-cells does only that.\n"
     "--shard I/N: run only the instances whose index is I mod N (0 <= I < N), each with all\n"
     "its methods; merge the shards' folders after.\n"
     "--checked: rearm's trials check the closed loop's invariants on every tick (finite\n"
@@ -54,6 +61,7 @@ struct SweepArgs {
   std::vector<std::string> merge_dirs;
   std::string merge_out, report_dir;
   bool no_plot = false;
+  bool check_only = false;
 };
 
 experiment::MethodRegistry registry() {
@@ -98,6 +106,54 @@ int run_report(const SweepArgs& a) {
   return kExitOk;
 }
 
+// The cell check of the cells this shard touches (cell_check.h); its verdicts also go to
+// DIR/cells.csv with the sweep.
+std::vector<experiment::CellVerdict> check_shard_cells(const experiment::SweepPlan& full,
+                                                       const experiment::SweepPlan& part,
+                                                       experiment::SweepOptions& o) {
+  const std::vector<experiment::InstanceJob> check = experiment::cells_touched(full, part);
+  if (o.progress != nullptr) {
+    std::fprintf(o.progress, "sweep %s: checking the obstacle density of %zu instances\n",
+                 full.name.c_str(), check.size());
+  }
+  std::vector<experiment::CellVerdict> verdicts = experiment::check_cells(check, o.threads);
+  o.cells_csv = experiment::verdicts_csv(verdicts);
+  return verdicts;
+}
+
+// The shard's plan without the refused cells, or rearm::Error listing them (refused_cells:
+// error, the default).
+experiment::SweepPlan accepted_part(const scenario::SweepFile& file,
+                                    const experiment::SweepPlan& part,
+                                    const std::vector<experiment::CellVerdict>& verdicts) {
+  const std::string refused = experiment::describe_refused(verdicts);
+  if (refused.empty()) return part;
+  if (!file.skip_refused_cells) {
+    throw Error("sweep " + part.name +
+                ": cells refused before any trial ran (an instance cannot be generated or misses "
+                "its target obstacle density):\n" +
+                refused +
+                "lower their densities, enlarge their rooms, or set `refused_cells: skip`");
+  }
+  std::fprintf(stderr, "sweep %s: skipping refused cells (refused_cells: skip):\n%s",
+               part.name.c_str(), refused.c_str());
+  return experiment::without_cells(part, verdicts);
+}
+
+// --check-cells: DIR/cells.csv and a summary, no trial.
+int write_cell_check(const std::string& name, const experiment::SweepOptions& o,
+                     const std::vector<experiment::CellVerdict>& verdicts) {
+  std::filesystem::create_directories(o.out_dir);
+  const std::string path = (std::filesystem::path(o.out_dir) / experiment::kCellsCsv).string();
+  write_file_atomically(path, o.cells_csv);
+  const auto refused = std::count_if(verdicts.begin(), verdicts.end(),
+                                     [](const experiment::CellVerdict& v) { return v.refused; });
+  std::printf("sweep %s: %td of %zu cells refused; the verdicts are in %s\n%s", name.c_str(),
+              refused, verdicts.size(), path.c_str(),
+              experiment::describe_refused(verdicts).c_str());
+  return kExitOk;
+}
+
 int run_sweep_file(SweepArgs a) {
   if (a.path.empty()) throw Error("missing SWEEP.yaml (or the subcommand merge or report)");
   if (a.options.out_dir.empty()) throw Error("missing --out DIR");
@@ -108,8 +164,11 @@ int run_sweep_file(SweepArgs a) {
   const scenario::SweepFile file = scenario::load_sweep_file(path);
   o.spec_text = read_file(path);
   const experiment::MethodRegistry methods = registry();
-  const experiment::SweepPlan plan =
-      experiment::shard_of(experiment::plan_sweep(file, methods), o.shard);
+  const experiment::SweepPlan full = experiment::plan_sweep(file, methods);
+  const experiment::SweepPlan part = experiment::shard_of(full, o.shard);
+  const std::vector<experiment::CellVerdict> verdicts = check_shard_cells(full, part, o);
+  if (a.check_only) return write_cell_check(full.name, o, verdicts);
+  const experiment::SweepPlan plan = accepted_part(file, part, verdicts);
   std::fprintf(stderr, "sweep %s: %zu trials in shard %s (%zu in the sweep), %d threads, into %s\n",
                plan.name.c_str(), plan.trials.size(), experiment::to_string(o.shard).c_str(),
                plan.total_trials, o.threads, o.out_dir.c_str());
@@ -158,6 +217,8 @@ Command add_sweep(CLI::App& program) {
               "resume a DIR whose rows came from another build revision");
   c->add_flag("--checked", a->options.checked, "check the closed loop's invariants every tick");
   c->add_flag("--quiet", a->quiet, "no progress lines");
+  c->add_flag("--check-cells", a->check_only,
+              "only check every cell's obstacle density; write DIR/cells.csv and stop");
   add_merge(*c, *a);
   add_report(*c, *a);
   return {c, [a, c] {

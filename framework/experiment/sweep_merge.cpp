@@ -65,6 +65,27 @@ void copy_instances(const fs::path& from, const fs::path& to) {
   }
 }
 
+// The shards' cell verdicts (DIR/cells.csv, cell_check.h) united by cell index; "" when no
+// folder has them.
+std::string merged_cells(const std::vector<std::string>& dirs) {
+  std::map<std::size_t, std::string> lines;
+  std::string header;
+  for (const std::string& d : dirs) {
+    const fs::path p = fs::path(d) / kCellsCsv;
+    if (!fs::exists(p)) continue;
+    std::istringstream in(read_all(p));
+    std::string line;
+    std::getline(in, header);
+    while (std::getline(in, line)) {
+      if (!line.empty()) lines.emplace(std::stoull(line.substr(0, line.find(','))), line);
+    }
+  }
+  if (lines.empty()) return "";
+  std::string text = header + "\n";
+  for (const auto& [cell, line] : lines) text += line + "\n";
+  return text;
+}
+
 }  // namespace
 
 MergeSummary merge_sweeps(const std::vector<std::string>& dirs, const std::string& out_dir) {
@@ -105,6 +126,8 @@ MergeSummary merge_sweeps(const std::vector<std::string>& dirs, const std::strin
   const fs::path out(out_dir);
   write_file_atomically((out / kTrialsCsv).string(), text);
   write_file_atomically((out / kSweepCopy).string(), spec);
+  const std::string cells = merged_cells(dirs);
+  if (!cells.empty()) write_file_atomically((out / kCellsCsv).string(), cells);
   fs::create_directories(out / kInstancesDir);
   for (const std::string& d : dirs)
     copy_instances(fs::path(d) / kInstancesDir, out / kInstancesDir);

@@ -1,6 +1,9 @@
 #include "experiment/sweep_plan.h"
 
 #include <charconv>
+#include <cstdio>
+#include <functional>
+#include <string>
 #include <system_error>
 
 #include "core/error.h"
@@ -73,6 +76,25 @@ std::string to_string(const Shard& s) {
   return std::to_string(s.index) + "/" + std::to_string(s.count);
 }
 
+// The cell's name: the generator's "random_<class>_n<N>_s<seed>" is shared by the cells of one
+// N, which share their seeds; this one says what the cell was.
+std::string cell_name(const InstanceJob& job) {
+  const scenario::InstanceSpec& s = job.spec;
+  char buf[160];
+  std::snprintf(buf, sizeof buf, "%s_n%d_d%g_side%g_u%g_%s", scenario::to_string(s.goal_class),
+                s.objects, s.obstacle_density, s.width, s.unknown_fraction,
+                s.round_unknown ? "round" : "polygon");
+  std::string name = buf;
+  for (char& c : name) {
+    if (c == '+') c = 'p';
+  }
+  return name;
+}
+
+std::string instance_name(const InstanceJob& job) {
+  return cell_name(job) + "_r" + std::to_string(job.rep);
+}
+
 SweepPlan plan_sweep(const scenario::SweepFile& f, const MethodRegistry& methods) {
   for (std::size_t i = 0; i < f.methods.size(); ++i) {
     if (!methods.contains(scenario::method_entry(f.methods[i]).method)) {
@@ -94,6 +116,7 @@ SweepPlan plan_sweep(const scenario::SweepFile& f, const MethodRegistry& methods
               for (int rep = 0; rep < f.seeds; ++rep) {
                 InstanceJob job;
                 job.index = plan.instances.size();
+                job.cell = job.index / static_cast<std::size_t>(f.seeds);
                 job.spec = cell_spec(f, w, c, n, density, unknown, round);
                 job.spec.seed = instance_seed(f.base_seed, n, rep);
                 job.rep = rep;
@@ -120,18 +143,15 @@ SweepPlan plan_sweep(const scenario::SweepFile& f, const MethodRegistry& methods
   return plan;
 }
 
-SweepPlan shard_of(const SweepPlan& plan, const Shard& shard) {
+SweepPlan subset_of(const SweepPlan& plan, const std::function<bool(const InstanceJob&)>& keep) {
   SweepPlan out;
   out.name = plan.name;
   out.total_trials = plan.total_trials;
   std::vector<std::size_t> position(plan.instances.size(), plan.instances.size());
-  for (const InstanceJob& job : plan.instances) {
-    if (job.index % static_cast<std::size_t>(shard.count) !=
-        static_cast<std::size_t>(shard.index)) {
-      continue;
-    }
-    position[job.index] = out.instances.size();
-    out.instances.push_back(job);
+  for (std::size_t i = 0; i < plan.instances.size(); ++i) {
+    if (!keep(plan.instances[i])) continue;
+    position[i] = out.instances.size();
+    out.instances.push_back(plan.instances[i]);
   }
   for (const TrialJob& t : plan.trials) {
     if (position[t.instance] == plan.instances.size()) continue;
@@ -140,6 +160,13 @@ SweepPlan shard_of(const SweepPlan& plan, const Shard& shard) {
     out.trials.push_back(std::move(copy));
   }
   return out;
+}
+
+SweepPlan shard_of(const SweepPlan& plan, const Shard& shard) {
+  return subset_of(plan, [&](const InstanceJob& job) {
+    return job.index % static_cast<std::size_t>(shard.count) ==
+           static_cast<std::size_t>(shard.index);
+  });
 }
 
 }  // namespace rearm::experiment

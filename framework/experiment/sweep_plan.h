@@ -14,6 +14,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,7 @@ namespace rearm::experiment {
 
 struct InstanceJob {
   std::size_t index = 0;  // canonical instance index
+  std::size_t cell = 0;   // canonical cell index: the cell's instances are its `seeds` reps
   scenario::InstanceSpec spec;
   int rep = 0;
   std::string workspace_rule;
@@ -58,6 +60,14 @@ std::string to_string(const Shard& s);
 SweepPlan plan_sweep(const scenario::SweepFile& f, const MethodRegistry& methods);
 // The part of the plan one shard runs.
 SweepPlan shard_of(const SweepPlan& plan, const Shard& shard);
+// The plan's instances that `keep` accepts, with their trials (canonical indices kept).
+SweepPlan subset_of(const SweepPlan& plan, const std::function<bool(const InstanceJob&)>& keep);
+
+// The cell's name, e.g. "cyclic_n8_d0.05_side5.6_u0.5_round" (class, N, target density,
+// workspace side, unknown fraction and shapes), and the instance's: the cell's with "_r<rep>",
+// unique within the sweep (the name of its file under DIR/instances).
+std::string cell_name(const InstanceJob& job);
+std::string instance_name(const InstanceJob& job);
 
 // The derivations above, exposed for tests.
 std::uint64_t instance_seed(std::uint64_t base_seed, int objects, int rep);

@@ -61,21 +61,6 @@ InstanceInfo info_of(const scenario::GeneratedInstance& g) {
   return info;
 }
 
-// The instance's name: unique within the sweep (the generator's "random_<class>_n<N>_s<seed>"
-// is shared by the cells of one N, which share their seeds), and it says what the cell was.
-std::string instance_name(const InstanceJob& job) {
-  const scenario::InstanceSpec& s = job.spec;
-  char buf[160];
-  std::snprintf(buf, sizeof buf, "%s_n%d_d%g_side%g_u%g_%s_r%d", scenario::to_string(s.goal_class),
-                s.objects, s.obstacle_density, s.width, s.unknown_fraction,
-                s.round_unknown ? "round" : "polygon", job.rep);
-  std::string name = buf;
-  for (char& c : name) {
-    if (c == '+') c = 'p';
-  }
-  return name;
-}
-
 Generated generate(const InstanceJob& job, const fs::path& instances) {
   Generated out;
   try {
@@ -161,6 +146,7 @@ SweepSummary run_sweep(const SweepPlan& plan, const MethodRegistry& methods,
   const auto start = std::chrono::steady_clock::now();
   const fs::path dir(o.out_dir);
   prepare_folder(dir, o);
+  if (!o.cells_csv.empty()) write_file_atomically((dir / kCellsCsv).string(), o.cells_csv);
   const std::string csv = (dir / kTrialsCsv).string();
   TrialLog log(csv);
   check_revisions(log, csv, o.resume_any_revision);

@@ -35,6 +35,9 @@ struct SweepOptions {
   // rearm's trials check the closed loop's invariants on every tick (MethodInput::checked).
   bool checked = false;
   std::FILE* progress = stderr;  // nullptr: silent
+  // The cell check's verdicts (cell_check.h, verdicts_csv), written to DIR/cells.csv; empty:
+  // not written.
+  std::string cells_csv;
 };
 
 struct SweepSummary {
@@ -57,5 +60,6 @@ inline constexpr const char* kTrialsCsv = "trials.csv";
 inline constexpr const char* kSweepCopy = "sweep.yaml";
 inline constexpr const char* kShardFile = "shard.txt";
 inline constexpr const char* kInstancesDir = "instances";
+inline constexpr const char* kCellsCsv = "cells.csv";
 
 }  // namespace rearm::experiment

@@ -19,6 +19,7 @@ class CoverageGrid {
   // Cells of p not covered yet; with commit, they become covered.
   std::size_t fresh(const geometry::Polygon& p, bool commit);
   double cell_area() const { return h_ * h_; }
+  double cell_side() const { return h_; }
 
  private:
   double h_;

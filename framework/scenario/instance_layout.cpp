@@ -119,7 +119,11 @@ Layout layout(const InstanceSpec& spec) {
     l.point_boundary = std::max(rho + kDenseWallGap, l.region_side / 2 + kPlacementSlack);
     l.robot_object = r + rho + kDenseRegionGap;
   }
-  l.point_obstacle = std::max(l.grasp, l.region_side / std::numbers::sqrt2 + kPlacementSlack);
+  const double region_clear = l.region_side / std::numbers::sqrt2 + kPlacementSlack;
+  l.point_pocket = std::max(l.grasp, region_clear);
+  // Dense: an object next to an obstacle is graspable from its free side only, as next to a
+  // wall (cb); the certificate's grasp test is one-sided (solvability.h (b)).
+  l.point_obstacle = l.dense ? std::max(rho + kDenseWallGap, region_clear) : l.point_pocket;
   return l;
 }
 

@@ -20,7 +20,8 @@ struct Layout {
   double passage = 0;         // w
   double pair = 0;            // R of solvability.h
   double grasp = 0;           // cg
-  double point_obstacle = 0;  // max(cg, s/√2 + slack)
+  double point_obstacle = 0;  // co: points ↔ obstacles (random_instance.h, "Clearances")
+  double point_pocket = 0;    // points ↔ the sealed pocket's box: max(cg, s/√2 + slack)
   double point_boundary = 0;  // cb
   double region_side = 0;     // s
   double spacing = 0;         // d

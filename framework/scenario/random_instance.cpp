@@ -91,7 +91,6 @@ constexpr std::size_t kMaxRasterCells = 250'000;
 // Sealed pocket (random_instance.h, "Sealed pocket").
 constexpr double kWallThickness = 0.2;  // m
 constexpr double kMinStub = 0.1;        // m: front wall beside the mouth, at least
-constexpr int kMaxRedraws = 3;
 constexpr std::uint64_t kRedrawStreamStride = 100;
 
 // Simulated seconds: a base plus a share per object (each needs a grasp, a carry, a release).
@@ -187,10 +186,11 @@ class Generator {
   // The instance, or nullopt when the exact checks fail (the caller redraws).
   std::optional<GeneratedInstance> run() {
     if (spec_.goal_class == GoalClass::kSealed) place_pocket();
+    if (l_.dense) place_parking();  // reserved before the crowd takes the room
     place_starts();
     place_goals();
     place_robot();
-    place_parking();
+    if (!l_.dense) place_parking();
     build_targets();
     if (pocket_ && !commit_pocket()) return std::nullopt;
     place_obstacles();
@@ -236,7 +236,7 @@ class Generator {
 
   bool point_ok(const Point& p, const std::vector<Point>& out,
                 const std::vector<Point>& also) const {
-    return spaced_from(p, out) && spaced_from(p, also) && clear_of_pocket(p, l_.point_obstacle);
+    return spaced_from(p, out) && spaced_from(p, also) && clear_of_pocket(p, l_.point_pocket);
   }
 
   // Dense fallback: the sites of a square lattice of pitch d over the inset workspace that keep
@@ -291,7 +291,7 @@ class Generator {
 
   void place_starts() {
     Rng rng = stream(kStartsStream);
-    spaced_points(rng, spec_.objects, starts_, {}, "the start of object M", 1);
+    spaced_points(rng, spec_.objects, starts_, reserved(), "the start of object M", 1);
   }
 
   void place_goals() {
@@ -306,9 +306,12 @@ class Generator {
       goals_.push_back(pocket_->goal);
       --n;
     }
-    spaced_points(rng, n, goals_, {}, "the goal of object M", spec_.objects - n + 1);
+    spaced_points(rng, n, goals_, reserved(), "the goal of object M", spec_.objects - n + 1);
   }
 
+  // The parking spot keeps the points' spacing from every start and goal: drawn after them
+  // (sparse) or before them, which then keep clear of it (dense: in a crowded room the starts
+  // and goals would leave no site for it).
   void place_parking() {
     Rng rng = stream(kParkingStream);
     std::vector<Point> all = starts_;
@@ -316,6 +319,11 @@ class Generator {
     std::vector<Point> spot;
     spaced_points(rng, 1, spot, all, "the parking spot", 1);
     parking_ = spot.front();
+    parked_ = true;
+  }
+
+  std::vector<Point> reserved() const {
+    return parked_ ? std::vector<Point>{parking_} : std::vector<Point>{};
   }
 
   // The robot start: clear of the boundary (the pair's raster needs it), every object start
@@ -567,7 +575,7 @@ class Generator {
 
   // Up to kCandidatesPerObstacle poses that pass acceptable() and add at least kMinNewShare
   // of their area to the union (coverage grid), largest addition first.
-  std::vector<Obstacle> candidates(Rng& rng, bool unknown, int& attempts) {
+  std::vector<Obstacle> candidates(Rng& rng, bool unknown, double room, int& attempts) {
     std::vector<std::pair<double, Obstacle>> found;
     for (; attempts < spec_.max_attempts &&
            found.size() < static_cast<std::size_t>(kCandidatesPerObstacle);
@@ -577,7 +585,11 @@ class Generator {
       if (!acceptable(o)) continue;
       const double fresh =
           static_cast<double>(coverage_.fresh(o.polygon, false)) * coverage_.cell_area();
-      if (fresh >= kMinNewShare * o.polygon.area()) found.emplace_back(fresh, std::move(o));
+      // The grid's estimate errs by at most the cells along the boundary of o's box.
+      const Point size = o.box.hi - o.box.lo;
+      const double grid_error = 2 * (size.x() + size.y()) * coverage_.cell_side();
+      if (fresh < kMinNewShare * o.polygon.area() || fresh > room + grid_error) continue;
+      found.emplace_back(fresh, std::move(o));
     }
     std::stable_sort(found.begin(), found.end(),
                      [](const auto& a, const auto& b) { return a.first > b.first; });
@@ -600,20 +612,25 @@ class Generator {
   }
 
   // One obstacle after another until the union's area (kept exactly, new_area) reaches the
-  // target density; max_attempts consecutive failed draws end it.
+  // target density; an obstacle that would take it past target + kDensityTolerance is
+  // rejected (in a small room one large obstacle would overshoot by more than the tolerance);
+  // max_attempts consecutive failed draws end it.
   void place_obstacles() {
     Rng rng = stream(kObstaclesStream);
     const double workspace_area = l_.width * l_.height;
+    const double cap = (spec_.obstacle_density + kDensityTolerance) * workspace_area;
     int attempts = 0;
     while (covered_ / workspace_area < spec_.obstacle_density) {
       const bool unknown = rng.bernoulli(spec_.unknown_fraction);
       bool placed = false;
       while (!placed && attempts < spec_.max_attempts) {
-        for (Obstacle& o : candidates(rng, unknown, attempts)) {
+        for (Obstacle& o : candidates(rng, unknown, cap - covered_, attempts)) {
+          const double added = new_area(o);
+          if (covered_ + added > cap) continue;
           const std::vector<int> cells = raster_.newly_blocked(o.polygon);
           if (!raster_.connects(source_, targets_, cells)) continue;
           raster_.block(cells);
-          covered_ += new_area(o);
+          covered_ += added;
           coverage_.fresh(o.polygon, true);
           obstacles_.push_back(std::move(o));
           placed = true;
@@ -702,7 +719,7 @@ class Generator {
     const double area = l_.width * l_.height;
     g.achieved_density = covered_area() / area;
     g.footprint_density = footprint_area(spec_) / area;
-    g.density_reached = g.achieved_density >= spec_.obstacle_density;
+    g.density_reached = std::abs(g.achieved_density - spec_.obstacle_density) <= kDensityTolerance;
     g.dense = l_.dense;
     g.region_side = l_.region_side;
     g.point_spacing = l_.spacing;
@@ -738,6 +755,7 @@ class Generator {
   std::optional<Pocket> pocket_;
   std::vector<Point> starts_, goals_;
   Point parking_ = Point::Zero();
+  bool parked_ = false;
   Point robot_start_ = Point::Zero();
   double robot_heading_ = 0;
   std::vector<std::vector<int>> targets_;
@@ -772,10 +790,18 @@ GoalClass goal_class_from_string(std::string_view text) {
 
 GeneratedInstance generate_instance(const InstanceSpec& spec) {
   check_spec(spec);
-  std::string last;
+  // A draw that misses the target density (|achieved - target| > kDensityTolerance) is redrawn
+  // too; after the last draw the closest solvable one is returned with density_reached false.
+  std::optional<GeneratedInstance> best;
   for (int redraw = 0; redraw <= kMaxRedraws; ++redraw) {
-    if (auto g = Generator(spec, redraw).run()) return std::move(*g);
+    std::optional<GeneratedInstance> g = Generator(spec, redraw).run();
+    if (!g) continue;
+    if (g->density_reached) return std::move(*g);
+    const double miss = std::abs(g->achieved_density - spec.obstacle_density);
+    if (!best || miss < std::abs(best->achieved_density - spec.obstacle_density))
+      best = std::move(g);
   }
+  if (best) return std::move(*best);
   throw Error(describe(spec) + ": the exact solvability check failed on " +
               std::to_string(kMaxRedraws + 1) +
               " draws; use a lower obstacle_density or a larger workspace");

@@ -230,7 +230,7 @@ SweepFile read_sweep(Reader& r, const YAML::Node& doc) {
   const Fields f(r, doc, "",
                  {"name", "description", "methods", "classes", "objects", "densities", "workspace",
                   "footprint_densities", "unknown_fraction", "unknown_shapes", "seeds",
-                  "time_limit", "query_limit", "base_seed", "instance"});
+                  "time_limit", "query_limit", "base_seed", "instance", "refused_cells"});
   SweepFile s;
   s.source = r.source();
   s.name = r.text(f.require("name"), "name");
@@ -263,6 +263,12 @@ SweepFile read_sweep(Reader& r, const YAML::Node& doc) {
   }
   if (const auto v = f.find("base_seed")) s.base_seed = unsigned64(r, *v, "base_seed");
   if (const auto v = f.find("instance")) read_instance(r, *v, s.instance);
+  if (const auto v = f.find("refused_cells")) {
+    const std::string t = r.text(*v, "refused_cells");
+    if (t != "error" && t != "skip")
+      r.fail("refused_cells", "expected error or skip, got '" + t + "'");
+    s.skip_refused_cells = t == "skip";
+  }
   if (s.workspace.kind == WorkspaceRule::Kind::kFootprint) {
     const std::string key =
         s.footprints.empty() ? "workspace.footprint_density" : "footprint_densities";

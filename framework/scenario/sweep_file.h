@@ -57,6 +57,9 @@ struct SweepFile {
   long query_limit = 0;                   // the baselines' motion queries per trial (0: none)
   std::uint64_t base_seed = 0;
   InstanceSpec instance;  // the generator's other settings (radii, region side, ...)
+  // `refused_cells: skip`: a cell the generator cannot give its target density (cell_check.h
+  // of the experiment layer) is left out and listed; `error` (the default) stops the sweep.
+  bool skip_refused_cells = false;
 
   // The workspace rule of each footprint, in file order, or the one rule.
   std::vector<WorkspaceRule> workspaces() const;

@@ -556,4 +556,37 @@ TEST(CliTest, SweepRejectsBadUsageAndBadFilesWithTheKey) {
   std::filesystem::remove_all(dir);
 }
 
+// A cell the generator cannot give its target obstacle density is refused before any trial
+// runs (exit 2, the cell and the reason named, no row written); with `refused_cells: skip` the
+// other cells run and DIR/cells.csv lists the verdicts.
+TEST(CliTest, SweepRefusesCellsThatMissTheirObstacleDensity) {
+  const std::string dir = temp_dir();
+  const std::string cells =
+      "methods: [mrs]\nclasses: [random]\nobjects: [1]\ndensities: [0.05, 0.45]\n"
+      "workspace: {side: 5}\nseeds: 2\ntime_limit: 5\nquery_limit: 2000\n"
+      "instance: {max_attempts: 100}\n";
+  {
+    std::ofstream f(dir + "/refuse.yaml");
+    f << "name: refuse\n" << cells;
+    std::ofstream g(dir + "/skip.yaml");
+    g << "name: skip\nrefused_cells: skip\n" << cells;
+  }
+  const Result refused = run("sweep " + dir + "/refuse.yaml --quiet --out " + dir + "/r");
+  EXPECT_EQ(refused.code, 2) << refused.out;
+  EXPECT_TRUE(contains(refused.out, "random_n1_d0.45_side5_u0.5_round: instance r")) << refused.out;
+  EXPECT_TRUE(contains(refused.out, "target 0.450")) << refused.out;
+  EXPECT_FALSE(contains(refused.out, "random_n1_d0.05_side5")) << refused.out;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/r/trials.csv"));
+  const Result skipped = run("sweep " + dir + "/skip.yaml --quiet --out " + dir + "/s");
+  EXPECT_EQ(skipped.code, 0) << skipped.out;
+  EXPECT_TRUE(contains(skipped.out, "skipping refused cells")) << skipped.out;
+  const std::string csv = slurp(dir + "/s/trials.csv");
+  EXPECT_TRUE(contains(csv, "random_n1_d0.05_side5_u0.5_round_r1")) << csv;
+  EXPECT_FALSE(contains(csv, "_d0.45_")) << csv;
+  const std::string verdicts = slurp(dir + "/s/cells.csv");
+  EXPECT_TRUE(contains(verdicts, "0,random_n1_d0.05_side5_u0.5_round,accepted,")) << verdicts;
+  EXPECT_TRUE(contains(verdicts, "1,random_n1_d0.45_side5_u0.5_round,refused,")) << verdicts;
+  std::filesystem::remove_all(dir);
+}
+
 }  // namespace

@@ -90,24 +90,9 @@ std::vector<Polygon> obstacles_of(const Scenario& s) {
   return out;
 }
 
-// Share of the cells of side `cell` whose centre lies in some obstacle: the union's density.
+// The union's density by an independent raster (geometry_oracle.h).
 double raster_density(const Scenario& s, double W, double H, double cell) {
-  const int nx = static_cast<int>(std::ceil(W / cell)), ny = static_cast<int>(std::ceil(H / cell));
-  std::vector<char> hit(static_cast<std::size_t>(nx * ny), 0);
-  for (const Polygon& p : obstacles_of(s)) {
-    double x0 = W, x1 = 0, y0 = H, y1 = 0;
-    for (const Point& v : p.vertices) {
-      x0 = std::min(x0, v.x()), x1 = std::max(x1, v.x());
-      y0 = std::min(y0, v.y()), y1 = std::max(y1, v.y());
-    }
-    for (int iy = std::max(0, static_cast<int>(y0 / cell)); iy < ny && (iy * cell) <= y1; ++iy) {
-      for (int ix = std::max(0, static_cast<int>(x0 / cell)); ix < nx && (ix * cell) <= x1; ++ix) {
-        if (test_support::ray_cast_inside(p, Point((ix + 0.5) * cell, (iy + 0.5) * cell)))
-          hit[iy * nx + ix] = 1;
-      }
-    }
-  }
-  return static_cast<double>(std::count(hit.begin(), hit.end(), 1)) / (nx * ny);
+  return test_support::raster_union_share(obstacles_of(s), W, H, cell);
 }
 
 InstanceSpec make_spec(int n, GoalClass c, double density, std::uint64_t seed) {
@@ -183,8 +168,9 @@ TEST(RandomInstance, ValidSolvableAndKeepsThePassageRulesAcrossClassesAndDensiti
   }
 }
 
-// The committed sweep's densities in the 10 x 10 m default workspace for small N: reached for
-// every seed, and the reported density is the union's (an independent raster of it).
+// The committed sweep's densities in the 10 x 10 m default workspace for small N: reached within
+// kDensityTolerance for every seed (no overshoot by a last large obstacle), and the reported
+// density is the union's (an independent raster of it).
 TEST(RandomInstance, DensityReachesTheTargetAndIsTheUnionsArea) {
   for (const GoalClass c : kClasses) {
     for (const int n : {1, 4}) {
@@ -193,9 +179,11 @@ TEST(RandomInstance, DensityReachesTheTargetAndIsTheUnionsArea) {
         const GeneratedInstance g = generate_instance(spec);
         SCOPED_TRACE(g.scenario.description);
         EXPECT_TRUE(g.density_reached);
-        EXPECT_GE(g.achieved_density, 0.35);
-        EXPECT_LT(g.achieved_density, 0.35 + 9.0 / 100);  // one obstacle of at most 3 x 3 m
-        EXPECT_NEAR(raster_density(g.scenario, 10, 10, 0.02), g.achieved_density, 0.01);
+        // Within the tolerance of the target, by the generator's exact area and by a raster.
+        EXPECT_NEAR(g.achieved_density, 0.35, kDensityTolerance);
+        const double raster = raster_density(g.scenario, 10, 10, 0.02);
+        EXPECT_NEAR(raster, 0.35, kDensityTolerance + 0.01);
+        EXPECT_NEAR(raster, g.achieved_density, 0.01);
         double sum = 0;
         for (const Polygon& p : obstacles_of(g.scenario)) sum += shoelace(p);
         EXPECT_GE(sum / 100, g.achieved_density - 1e-9);  // overlaps counted once

@@ -61,4 +61,24 @@ geometry::Polygon ellipse_polygon(const std::vector<double>& angles, double a, d
   return p;
 }
 
+double raster_union_share(const std::vector<geometry::Polygon>& polygons, double W, double H,
+                          double cell) {
+  const int nx = static_cast<int>(std::ceil(W / cell)), ny = static_cast<int>(std::ceil(H / cell));
+  std::vector<char> hit(static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny), 0);
+  for (const geometry::Polygon& p : polygons) {
+    double x0 = W, x1 = 0, y0 = H, y1 = 0;
+    for (const geometry::Point& v : p.vertices) {
+      x0 = std::min(x0, v.x()), x1 = std::max(x1, v.x());
+      y0 = std::min(y0, v.y()), y1 = std::max(y1, v.y());
+    }
+    for (int iy = std::max(0, static_cast<int>(y0 / cell)); iy < ny && iy * cell <= y1; ++iy) {
+      for (int ix = std::max(0, static_cast<int>(x0 / cell)); ix < nx && ix * cell <= x1; ++ix) {
+        if (ray_cast_inside(p, geometry::Point((ix + 0.5) * cell, (iy + 0.5) * cell)))
+          hit[static_cast<std::size_t>(iy * nx + ix)] = 1;
+      }
+    }
+  }
+  return static_cast<double>(std::count(hit.begin(), hit.end(), 1)) / (nx * ny);
+}
+
 }  // namespace rearm::test_support

@@ -24,6 +24,12 @@ geometry::Polygon ellipse_polygon(const std::vector<double>& angles, double a, d
 // Even-odd ray casting in doubles (its verdict is unreliable within ~1e-12 of an edge).
 bool ray_cast_inside(const geometry::Polygon& p, const geometry::Point& x);
 
+// Share of the cells of side `cell` of the [0, W] x [0, H] box whose centre lies in some polygon
+// (ray casting): the density of the polygons' union, overlaps counted once, to about the
+// boundary cells' share.
+double raster_union_share(const std::vector<geometry::Polygon>& polygons, double W, double H,
+                          double cell);
+
 // Distance from x to the segment [a, b] and to the polygon's boundary, brute force.
 double segment_distance(const geometry::Point& a, const geometry::Point& b,
                         const geometry::Point& x);
