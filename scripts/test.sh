@@ -2,7 +2,8 @@
 # Install what is missing, build everything (warnings are errors), run every test; then
 # rebuild every test with AddressSanitizer + UndefinedBehaviorSanitizer and run them again at
 # reduced size; then fuzz each parser and loader for 5 s (tests/fuzz/README.md).
-# Each stage prints its start time since the script began (CI has 45 minutes; about 40 used).
+# Each stage prints its start time since the script began (CI has 45 minutes; a fresh clone took
+# 30:57 here with Ninja and lld; the CI run before them took 45:39).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 stage() { printf 'test.sh: [%02d:%02d] %s\n' $((SECONDS / 60)) $((SECONDS % 60)) "$1"; }
