@@ -577,6 +577,13 @@ TEST(CliTest, SweepRefusesCellsThatMissTheirObstacleDensity) {
   EXPECT_TRUE(contains(refused.out, "target 0.450")) << refused.out;
   EXPECT_FALSE(contains(refused.out, "random_n1_d0.05_side5")) << refused.out;
   EXPECT_FALSE(std::filesystem::exists(dir + "/r/trials.csv"));
+  // --check-cells: the verdicts only, whatever refused_cells says.
+  const Result checked =
+      run("sweep " + dir + "/refuse.yaml --quiet --check-cells --out " + dir + "/c");
+  EXPECT_EQ(checked.code, 0) << checked.out;
+  EXPECT_TRUE(contains(checked.out, "1 of 2 cells refused")) << checked.out;
+  EXPECT_TRUE(contains(slurp(dir + "/c/cells.csv"), "1,random_n1_d0.45_side5_u0.5_round,refused,"));
+  EXPECT_FALSE(std::filesystem::exists(dir + "/c/trials.csv"));
   const Result skipped = run("sweep " + dir + "/skip.yaml --quiet --out " + dir + "/s");
   EXPECT_EQ(skipped.code, 0) << skipped.out;
   EXPECT_TRUE(contains(skipped.out, "skipping refused cells")) << skipped.out;
