@@ -319,11 +319,10 @@ class Generator {
     std::vector<Point> spot;
     spaced_points(rng, 1, spot, all, "the parking spot", 1);
     parking_ = spot.front();
-    parked_ = true;
   }
 
   std::vector<Point> reserved() const {
-    return parked_ ? std::vector<Point>{parking_} : std::vector<Point>{};
+    return parking_ ? std::vector<Point>{*parking_} : std::vector<Point>{};
   }
 
   // The robot start: clear of the boundary (the pair's raster needs it), every object start
@@ -410,7 +409,7 @@ class Generator {
   void build_targets() {
     for (const Point& p : starts_) targets_.push_back(grasp_cells(p));
     for (const Point& p : goals_) targets_.push_back(grasp_cells(p));
-    targets_.push_back(grasp_cells(parking_));
+    targets_.push_back(grasp_cells(*parking_));
     if (pocket_) {
       targets_.push_back({raster_.cell_of(pocket_->blocker +
                                           (spec_.robot_radius + kGripOffset) * pocket_->outward)});
@@ -557,7 +556,7 @@ class Generator {
         if (!clear_of_point(x, l_.point_obstacle)) return false;
       }
     }
-    if (!clear_of_point(parking_, l_.point_obstacle)) return false;
+    if (!clear_of_point(*parking_, l_.point_obstacle)) return false;
     if (!clear_of_point(robot_start_, l_.grasp)) return false;
     if (pocket_ && !clear_of_point(pocket_->blocker, spec_.object_radius + kObstacleObjectGap)) {
       return false;
@@ -754,8 +753,7 @@ class Generator {
   CoverageGrid coverage_;
   std::optional<Pocket> pocket_;
   std::vector<Point> starts_, goals_;
-  Point parking_ = Point::Zero();
-  bool parked_ = false;
+  std::optional<Point> parking_;  // placed before the starts (dense) or after the goals
   Point robot_start_ = Point::Zero();
   double robot_heading_ = 0;
   std::vector<std::vector<int>> targets_;
