@@ -14,6 +14,7 @@
 #include "executive/map_news.h"
 #include "executive/progress_monitor.h"
 #include "executive/recovery_state.h"
+#include "executive/release_pose.h"
 #include "geometry/convex.h"
 #include "geometry/polygon.h"
 #include "reactive/kinematics.h"
@@ -48,6 +49,10 @@ struct ActionState {
   double withdrawn = 0;      // Phase::kWithdraw: m reversed so far
   double withdraw_goal = 0;  // Phase::kWithdraw: m to reverse (withdraw_distance)
   bool bare = false;         // planned at the bare radius r: the contact margin alone closed x*
+  // RELEASE, RobustParams::release_pose: the pose it sets the object down from, and whether the
+  // straight last stretch (lead-in to x*) has begun.
+  std::optional<ReleasePose> pose;
+  bool pose_stretch = false;
   // Reactive rebuild state.
   std::uint64_t built_version = 0;
   bool built = false;
@@ -66,6 +71,7 @@ struct ActionState {
   GuideState guide;
   BackUpState back_up;
   DropState drop;
+  BlockerState blockers;
   OnceState once;
   std::string name() const;
 };

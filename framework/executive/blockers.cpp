@@ -1,5 +1,6 @@
 #include "executive/blockers.h"
 
+#include <algorithm>
 #include <string>
 #include <utility>
 #include <vector>
@@ -105,6 +106,34 @@ std::optional<Advance> closing_with_fragments(const Context& c, ActionState& a, 
   }
   if (out) ++c.recoveries.fragment_fixes;
   return out;
+}
+
+geometry::RegionSet fixed_components(const Context& c, double radius) {
+  const Point any = c.map.workspace().vertices.front();  // not used by freespace_components
+  const ScopedStopwatch sw(c.times.topology_s);
+  ++c.topology_checks;
+  return topology::freespace_components(
+      topology::make_input(c.map.workspace(), c.map.familiar(), {}, radius, any, any, std::nullopt,
+                           c.topology_cache),
+      c.topology_cache);
+}
+
+std::optional<geometry::Region> fixed_component(const Context& c, double radius,
+                                                const Point& center) {
+  for (geometry::Region& f : fixed_components(c, radius)) {
+    if (geometry::contains(f, center)) return std::move(f);
+  }
+  return std::nullopt;
+}
+
+void add_intruders(const Context& c, const Point& x, double clearance, const std::string& except,
+                   std::vector<std::size_t>& out) {
+  const auto& disks = c.map.movable();
+  const auto& ids = c.map.movable_ids();
+  for (std::size_t i = 0; i < disks.size(); ++i) {
+    if (ids[i] == except || std::find(out.begin(), out.end(), i) != out.end()) continue;
+    if ((disks[i].center - x).norm() - disks[i].radius < clearance) out.push_back(i);
+  }
 }
 
 }  // namespace rearm::executive

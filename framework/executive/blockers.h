@@ -37,4 +37,14 @@ std::optional<Advance> fix_mode_for(const Context& c, ActionState& a,
 std::optional<Advance> closing_with_fragments(const Context& c, ActionState& a, double radius,
                                               const Point& center);
 
+// The components of bound − ∪(familiar obstacles) for a disk of `radius`, the movable objects
+// left out (the topology cache's set), and the one that contains `center` (nullopt: none).
+geometry::RegionSet fixed_components(const Context& c, double radius);
+std::optional<geometry::Region> fixed_component(const Context& c, double radius,
+                                                const Point& center);
+// Appends to `out` (once each) the indices of the movable objects but `except` whose disk comes
+// within `clearance` of x.
+void add_intruders(const Context& c, const Point& x, double clearance, const std::string& except,
+                   std::vector<std::size_t>& out);
+
 }  // namespace rearm::executive

@@ -34,6 +34,10 @@ struct Context {
   RecoveryCounts& recoveries;
   int& topology_checks;
   const Twist& last_u;  // the last tick's command (RELEASE opens the gripper only after a stop)
+  // RobustParams::object_blockers: the disks (centre, radius of the pair or robot dilation) of
+  // the grasp side or release pose the current LTL action sent objects to Fix mode for; Fix
+  // mode's drop points keep their pair disks out of them. Emptied when an LTL action starts.
+  std::vector<geometry::Disk>& keep_clear;
 };
 
 // "(x, y)" with millimetres, for reasons and notes.

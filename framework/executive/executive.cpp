@@ -60,7 +60,7 @@ Executive::Executive(const ExecutiveParams& params, const std::vector<RegionOfIn
       ctx_{p_,          regions_,        map_,
            controller_, topology_cache_, drop_dilations_,
            times_,      recoveries_,     topology_checks_,
-           last_u_} {
+           last_u_,     keep_clear_} {
   validate(p_);
   controller_.set_convex_fallback(p_.robust.convex_fallback);
   controller_.set_miter_limit(miter_limit(p_));
@@ -111,6 +111,7 @@ bool Executive::fetch_ltl(double t) {
           // Robust variant (RobustParams::restore): an object an LTL RELEASE placed and Fix mode
           // moved is released into its region again, as an interface-layer action.
           ++recoveries_.restores;
+          keep_clear_.clear();
           fix_.push_back(
               make_action(ActionKind::kRelease, r->first, r->second, true, t, p_.progress));
           return true;
@@ -136,6 +137,7 @@ bool Executive::fetch_ltl(double t) {
   }
   ltl_->ltl = *next;
   fix_rounds_ = 0;
+  keep_clear_.clear();
   // Unknown names fail here, with the name, rather than deep inside a phase.
   if (!ltl_->region.empty()) region(ctx_, ltl_->region);
   if (!ltl_->object.empty()) object_radius(ctx_, ltl_->object);
@@ -272,11 +274,10 @@ void Executive::enter_fix(const std::vector<std::string>& blocking, double t) {
   if (!a->fix) {
     ++fix_entries_;
     if (++fix_rounds_ > p_.max_fix_rounds) {
-      const std::string why = "Fix mode entered " + std::to_string(p_.max_fix_rounds) +
-                              " times for this action without clearing the way";
-      const std::string what = a->name() + ": " + why;
-      end_current(ActionOutcome::kStuck, why, t);
-      finish(TaskStatus::kStuck, what, t);
+      // Stuck (paper §III-A): the mission controller is asked for an alternative.
+      end_stuck("Fix mode entered " + std::to_string(p_.max_fix_rounds) +
+                    " times for this action without clearing the way",
+                t);
       return;
     }
   }
@@ -292,12 +293,10 @@ void Executive::enter_fix(const std::vector<std::string>& blocking, double t) {
   if (carried) exec.push_back(make_action(ActionKind::kGrasp, *carried, "", true, t, p_.progress));
   const std::size_t limit = 2 * (map_.ground_truth().movable.size() + 1);
   if (fix_.size() + exec.size() > limit) {
-    const std::string why = "Fix mode would stack " + std::to_string(fix_.size() + exec.size()) +
-                            " actions (limit " + std::to_string(limit) +
-                            "): the blocking objects keep blocking each other";
-    const std::string what = a->name() + ": " + why;
-    end_current(ActionOutcome::kStuck, why, t);
-    finish(TaskStatus::kStuck, what, t);
+    end_stuck("Fix mode would stack " + std::to_string(fix_.size() + exec.size()) +
+                  " actions (limit " + std::to_string(limit) +
+                  "): the blocking objects keep blocking each other",
+              t);
     return;
   }
   for (auto it = exec.rbegin(); it != exec.rend(); ++it) fix_.push_back(std::move(*it));

@@ -28,14 +28,19 @@ constexpr double kUnknownRoom = 1 + 2 * geometry::kMaxDilationError;
 
 }  // namespace
 
-double known_clearance(const perception::SemanticMap& map, const Point& x,
-                       std::string_view except) {
+double fixed_clearance(const perception::SemanticMap& map, const Point& x) {
   if (!x.allFinite()) throw Error("interface layer: point is not finite");
   double best = -geometry::signed_distance(map.workspace(), x);
   for (const geometry::Polygon& p : map.familiar())
     best = std::min(best, geometry::signed_distance(p, x));
   for (const geometry::Polygon& p : map.unknown())
     best = std::min(best, geometry::signed_distance(p, x));
+  return best;
+}
+
+double known_clearance(const perception::SemanticMap& map, const Point& x,
+                       std::string_view except) {
+  double best = fixed_clearance(map, x);
   const auto& disks = map.movable();
   const auto& ids = map.movable_ids();
   for (std::size_t i = 0; i < disks.size(); ++i) {
@@ -52,7 +57,10 @@ namespace {
 std::optional<GraspCandidate> grasp_along(const perception::SemanticMap& map,
                                           std::string_view object, const geometry::Disk& m,
                                           double r, const Point& approach, const Point& robot,
-                                          const GraspParams& p) {
+                                          const GraspParams& p, Objects objects) {
+  auto clearance = [&](const Point& x, std::string_view except) {
+    return objects == Objects::kCounted ? known_clearance(map, x, except) : fixed_clearance(map, x);
+  };
   const double d = (approach - m.center).norm();
   if (!(d > m.radius + r + p.dock_gap)) return std::nullopt;
   const Point u = (approach - m.center) / d;
@@ -62,12 +70,15 @@ std::optional<GraspCandidate> grasp_along(const perception::SemanticMap& map,
   c.pair_center = m.center + r * u;
   c.distance = (c.approach - robot).norm();
   // The approach point itself is checked against the object too (clearance standoff).
-  if (known_clearance(map, c.approach) < r) return std::nullopt;
+  if (clearance(c.approach, {}) < r ||
+      (objects == Objects::kIgnored && (c.approach - m.center).norm() - m.radius < r)) {
+    return std::nullopt;
+  }
   for (int s = 1; s <= kDockSamples; ++s) {
     const Point q = c.approach + (c.contact - c.approach) * (double(s) / kDockSamples);
-    if (known_clearance(map, q, object) < r) return std::nullopt;
+    if (clearance(q, object) < r) return std::nullopt;
   }
-  if (known_clearance(map, c.pair_center, object) < r + m.radius + p.pair_margin) {
+  if (clearance(c.pair_center, object) < r + m.radius + p.pair_margin) {
     return std::nullopt;
   }
   return c;
@@ -82,12 +93,12 @@ std::optional<GraspCandidate> grasp_from(const perception::SemanticMap& map,
   if (!robot.allFinite()) throw Error("grasp: robot position is not finite");
   std::optional<geometry::Disk> holder;
   const geometry::Disk& m = object_disk(map, object, holder);
-  return grasp_along(map, object, m, r, robot, robot, p);
+  return grasp_along(map, object, m, r, robot, robot, p, Objects::kCounted);
 }
 
 std::vector<GraspCandidate> grasp_candidates(const perception::SemanticMap& map,
                                              std::string_view object, double r, const Point& robot,
-                                             const GraspParams& p) {
+                                             const GraspParams& p, Objects objects) {
   if (p.samples < 1) throw Error("grasp: samples must be >= 1");
   if (!std::isfinite(p.standoff) || !(p.standoff > p.dock_gap) || !(p.dock_gap > 0) ||
       !std::isfinite(p.pair_margin) || !(p.pair_margin >= 0)) {
@@ -102,7 +113,7 @@ std::vector<GraspCandidate> grasp_candidates(const perception::SemanticMap& map,
     const double a = 2 * std::numbers::pi * k / p.samples;
     const Point u(std::cos(a), std::sin(a));
     const Point approach = m.center + (m.radius + r + p.standoff) * u;
-    if (auto c = grasp_along(map, object, m, r, approach, robot, p)) out.push_back(*c);
+    if (auto c = grasp_along(map, object, m, r, approach, robot, p, objects)) out.push_back(*c);
   }
   std::stable_sort(out.begin(), out.end(), [](const GraspCandidate& a, const GraspCandidate& b) {
     return a.distance < b.distance;
@@ -114,7 +125,8 @@ std::optional<Point> disassemble_target(const geometry::Region& f,
                                         const perception::SemanticMap& map,
                                         std::string_view carried,
                                         const std::vector<RegionOfInterest>& regions,
-                                        double pair_radius, double inset) {
+                                        double pair_radius, double inset,
+                                        const std::vector<geometry::Disk>& keep) {
   if (!std::isfinite(pair_radius) || !(pair_radius > 0) || !std::isfinite(inset) || !(inset >= 0)) {
     throw Error("disassemble target: pair radius must be > 0 and inset >= 0 (finite)");
   }
@@ -127,6 +139,7 @@ std::optional<Point> disassemble_target(const geometry::Region& f,
       s = std::min(s, (disks[i].center - q).norm() - disks[i].radius);
     }
     for (const RegionOfInterest& r : regions) s = std::min(s, geometry::distance(r.polygon, q));
+    for (const geometry::Disk& k : keep) s = std::min(s, (k.center - q).norm() - k.radius);
     return s;
   };
   auto clear_of_unknown = [&](const Point& q) {
@@ -171,23 +184,8 @@ std::optional<Point> release_point(const geometry::Region& freespace,
     throw Error("release point: inset, enough and step must be finite (step > 0)");
   }
   const Point centroid = region_target(region);
-  std::vector<Point> candidates{centroid};
-  Point lo = region.polygon.vertices.front(), hi = lo;
-  for (const Point& v : region.polygon.vertices) {
-    lo = lo.cwiseMin(v);
-    hi = hi.cwiseMax(v);
-  }
   // A region too large for kMaxReleaseCandidates points at `step` gets a coarser grid.
-  const Point size = hi - lo;
-  step = std::max(step, std::sqrt(size.x() * size.y() / kMaxReleaseCandidates));
-  step = std::max({step, size.x() / kMaxReleaseCandidates, size.y() / kMaxReleaseCandidates});
-  const int nx = static_cast<int>(std::floor(size.x() / step));
-  const int ny = static_cast<int>(std::floor(size.y() / step));
-  for (int j = 0; j <= ny; ++j) {
-    for (int i = 0; i <= nx; ++i) {
-      candidates.emplace_back(lo.x() + i * step, lo.y() + j * step);
-    }
-  }
+  const std::vector<Point> candidates = region_grid(region, step, kMaxReleaseCandidates);
   std::optional<Point> best;
   double best_score = -std::numeric_limits<double>::infinity();
   double best_distance = 0;

@@ -21,6 +21,12 @@ using geometry::Point;
 // obstacles (not the carried object), except object `except`. Negative inside any of them.
 double known_clearance(const perception::SemanticMap& map, const Point& x,
                        std::string_view except = {});
+// As known_clearance without the movable objects: the workspace boundary, the localized
+// familiar obstacles and the visible unknown fragments.
+double fixed_clearance(const perception::SemanticMap& map, const Point& x);
+// Whether a geometric choice counts the movable objects as obstacles (the plan), or leaves
+// them out (what the fixed obstacles alone allow; the objects in the way go to Fix mode).
+enum class Objects { kCounted, kIgnored };
 
 // GRASP(M_i): where the robot stands before gripping (paper §IV: "a collision-free location on
 // the boundary of object M_i, contained in the freespace F").
@@ -44,12 +50,13 @@ struct GraspCandidate {
 // Candidates around object `object` (its true disk, map.object()), nearest to `robot` first,
 // keeping those whose docking segment (approach → contact) keeps the robot clear (known
 // clearance >= r, the object itself excepted) and whose pair disk (radius r + ρ_i +
-// pair_margin) is clear of everything known but the object. Membership in the exact
-// freespaces is left to the caller (planning.cpp). Throws rearm::Error for an unknown object
-// or invalid parameters.
+// pair_margin) is clear of everything known but the object (with Objects::kIgnored, of the
+// fixed obstacles alone). Membership in the exact freespaces is left to the caller. Throws
+// rearm::Error for an unknown object or invalid parameters.
 std::vector<GraspCandidate> grasp_candidates(const perception::SemanticMap& map,
                                              std::string_view object, double robot_radius,
-                                             const Point& robot, const GraspParams& p);
+                                             const Point& robot, const GraspParams& p,
+                                             Objects objects = Objects::kCounted);
 
 // The grasp with the robot where it stands as the approach point (docking straight toward the
 // object's centre), under the same checks as grasp_candidates: the robust variant's early dock.
@@ -66,12 +73,15 @@ std::optional<GraspCandidate> grasp_from(const perception::SemanticMap& map,
 // pair_radius are skipped (F ignores unknown obstacles, the reactive mapped space does not).
 // Ties go to the first edge (outer boundary first, counter-clockwise). nullopt when F has no
 // usable edge.
+// Disks in `keep` (RobustParams::object_blockers: a grasp side or release pose being cleared)
+// count in the score as the objects do.
 inline constexpr double kDisassembleInset = 0.01;
 std::optional<Point> disassemble_target(const geometry::Region& freespace,
                                         const perception::SemanticMap& map,
                                         std::string_view carried,
                                         const std::vector<RegionOfInterest>& regions,
-                                        double pair_radius, double inset = kDisassembleInset);
+                                        double pair_radius, double inset = kDisassembleInset,
+                                        const std::vector<geometry::Disk>& keep = {});
 
 // RELEASE(M_i, ℓ) target of the robust variant (the predicate holds wherever in ℓ the object
 // lies, §II-B; the paper drives the pair's centre to ℓ's centroid, §IV). Candidates: the points

@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "core/stopwatch.h"
+#include "core/text.h"
 #include "executive/back_up.h"
 #include "executive/guides.h"
 #include "executive/interface_layer.h"
@@ -13,6 +14,7 @@
 #include "executive/path_tracker.h"
 #include "executive/planning.h"
 #include "executive/recovery.h"
+#include "executive/release_pose.h"
 #include "executive/targets.h"
 #include "reactive/grasp.h"
 #include "reactive/navigation.h"
@@ -110,10 +112,58 @@ Advance rebuild(const Context& c, ActionState& a, const Pose& pose, double radiu
   return out;
 }
 
+// RELEASE from a pose (RobustParams::release_pose, release_pose.h): once the carried object's
+// centre lies goal_tolerance within ℓ (the predicate holds, §II-B), stop for one tick, then open
+// (ActionPhase::kOpen); nullopt before.
+std::optional<Advance> set_down_inside(const Context& c, ActionState& a, double t) {
+  const geometry::Disk m = *c.map.object(a.object);
+  if (!object_inside(region(c, a.region), m.center, c.p.goal_tolerance)) return std::nullopt;
+  a.note = "set " + a.object + " down inside " + a.region + " from a pose";
+  a.phase = ActionPhase::kOpen;
+  a.phase_start = t;
+  a.open_sent = false;
+  return Advance{};
+}
+
+// RELEASE from a pose, on the law's way to the lead-in: set down once the object is inside ℓ;
+// at the lead-in the straight last stretch (set_down) begins. nullopt while still on the way.
+std::optional<Advance> arrive_posed(const Context& c, ActionState& a, const Point& center,
+                                    double t) {
+  if (std::optional<Advance> open = set_down_inside(c, a, t)) return open;
+  if (!a.guide.path.empty() || (center - a.goal).norm() > c.p.goal_tolerance) return std::nullopt;
+  a.pose_stretch = true;
+  a.phase_start = t;
+  a.target = a.pose->pair;
+  a.guide.drop();
+  a.monitor.reset(t);
+  return restart();
+}
+
+// RELEASE from a pose, the last stretch: from the lead-in the robot turns in place toward the
+// object point o and drives straight at it (track_command of the robot's centre), every step
+// checked against everything known (step_clear), until the object's centre lies goal_tolerance
+// within ℓ; a step that is not clear, or the phase timeout, ends the action stuck.
+Advance set_down(const Context& c, ActionState& a, const Pose& pose, double t, double dt) {
+  if (std::optional<Advance> open = set_down_inside(c, a, t)) return *open;
+  const geometry::Disk m = *c.map.object(a.object);
+  Advance out;
+  out.u = track_command(pose, 0, a.pose->object, c.p.nav);
+  if (t - a.phase_start > c.p.phase_timeout) {
+    return stuck("the last stretch to " + a.region + "'s release pose took longer than " +
+                 rearm::fixed(c.p.phase_timeout, 3) + " s");
+  }
+  if (!step_clear(c, pose, reactive::unicycle_step(pose, out.u, dt))) {
+    return stuck("the last stretch to " + a.region + "'s release pose is not clear at " +
+                 point_text(pose.x) + " (" + a.object + " at " + point_text(m.center) + ")");
+  }
+  return out;
+}
+
 // Reached x* (MOVE: done; GRASP: align; RELEASE, DISASSEMBLE: stop and open), or the early stop
 // of DISASSEMBLE (paper §V-B); nullopt while still on the way.
 std::optional<Advance> arrive(const Context& c, ActionState& a, const Point& center, double rho,
                               double t) {
+  if (a.kind == ActionKind::kRelease && a.pose) return arrive_posed(c, a, center, t);
   Advance out;
   const double tol = a.kind == ActionKind::kGrasp ? c.p.grasp_goal_tolerance : c.p.goal_tolerance;
   bool reached = a.guide.path.empty() && (center - a.goal).norm() <= tol;
@@ -225,11 +275,14 @@ Advance navigate(const Context& c, ActionState& a, const Pose& pose, double t, d
   if (!a.planned || knowledge_changed(c, a)) {
     Advance p;
     try {
-      p = plan(c, a, pose);
+      p = plan(c, a, pose, Tick{t, dt});
     } catch (const topology::CenterNotFree& e) {
       return centre_not_free(c, a, pose, e.what(), {rho, radius, center}, Tick{t, dt});
     }
     if (p.kind != Advance::kCommand) return p;
+  }
+  if (a.kind == ActionKind::kRelease && a.pose && a.pose_stretch) {
+    return set_down(c, a, pose, t, dt);
   }
   if (!a.built || a.built_target != *a.target || a.built_radius != radius ||
       stale(c, a, radius, center)) {

@@ -39,6 +39,18 @@ inline constexpr double kEarlyDockReach = 0.1;
 inline constexpr double kBevelMiterLimit = 1.0;
 // m: grid spacing of the robust release point's candidates (release_point).
 inline constexpr double kReleaseStep = 0.05;
+// RobustParams::release_pose (release_pose.h): headings tried at each object point; m of the
+// straight last stretch; m within ℓ for the object's centre (two goal tolerances: where the
+// pair stops within one, the object lies within the other); m of clearance beyond the pair's
+// dilation radius along the stretch.
+inline constexpr int kPoseHeadings = 24;
+inline constexpr double kPoseApproach = 0.4;
+inline constexpr double kPoseInside = 0.1;
+inline constexpr double kPoseSlack = 0.02;
+// Fix-mode entries RobustParams::object_blockers asks for per action: a Fix-mode GRASP is not
+// bounded by max_fix_rounds (which counts the LTL action's), and objects that Fix mode can only
+// drop back into the way would be moved forever.
+inline constexpr int kMaxObjectFixes = 4;
 // m by which a chosen drop point beats the drop rule, so that the early stop holds within this
 // distance of it (the law converges to x* only asymptotically near obstacles).
 inline constexpr double kDropSlack = 0.15;
@@ -133,6 +145,23 @@ struct RobustParams {
   // point on every RELEASE instead (measured first) completed 3 fewer of the 108 variant
   // trials and none more: a centroid the pair reaches is kept.
   bool release_point = true;
+  // When neither ℓ's centroid nor a release point (release_point) lies in the pair's freespace
+  // (ℓ about a pair's width, beside a wall or among objects), RELEASE(M, ℓ) sets M down from a
+  // pose (release_pose.h): the pair's centre goes to a lead-in point, then straight along a
+  // heading h to x* = o − (r + dock gap) h, so that M's centre lands on o, kPoseInside within
+  // ℓ; the gripper opens as soon as M's centre lies goal_tolerance within ℓ. The paper has
+  // only the centroid and ends the action infeasible (measured: 16 of 22 failures of an N = 8
+  // crowded sweep, every obstacle familiar, were such RELEASEs beside a wall).
+  bool release_pose = true;
+  // When a GRASP finds no side of its object, or a RELEASE no pose in ℓ, that the movable
+  // objects leave free, and the fixed obstacles alone leave one, the objects in its way
+  // (within its dock, pair or stretch clearance, or separating it from the robot) go to Fix
+  // mode (recovery_object_blockers.cpp), and Fix mode's drop points keep clear of that side
+  // or pose (Context::keep_clear). The paper's topology check names only objects that
+  // separate x* from the robot (Appendix III); an object lying on x* or beside it makes the
+  // action infeasible (measured: 19 of 45 refused actions of crowded instances whose
+  // certificate holds, every obstacle familiar).
+  bool object_blockers = true;
   // Familiar obstacles dilated with the miter limit kBevelMiterLimit (every convex corner
   // bevelled on the tangent of the disk dilation, as near as a polygon stays a superset of it)
   // in every freespace the interface layer and the controller compute, instead of
@@ -239,17 +268,28 @@ struct RobustFlag {
   const char* key;
   bool RobustParams::*flag;
 };
-inline constexpr RobustFlag kRobustFlags[] = {
-    {"guide", &RobustParams::guide},       {"convex_fallback", &RobustParams::convex_fallback},
-    {"back_out", &RobustParams::back_out}, {"restore", &RobustParams::restore},
-    {"drop", &RobustParams::drop},         {"early_release", &RobustParams::early_release},
-    {"withdraw", &RobustParams::withdraw}, {"release_point", &RobustParams::release_point},
-    {"bevel", &RobustParams::bevel},       {"early_dock", &RobustParams::early_dock},
-    {"face", &RobustParams::face},         {"narrow", &RobustParams::narrow},
-    {"track", &RobustParams::track},       {"escape", &RobustParams::escape},
-    {"widen", &RobustParams::widen},       {"fragments", &RobustParams::fragments},
-    {"memory", &RobustParams::memory},     {"persist", &RobustParams::persist},
-    {"redrop", &RobustParams::redrop},     {"defer", &RobustParams::defer}};
+inline constexpr RobustFlag kRobustFlags[] = {{"guide", &RobustParams::guide},
+                                              {"convex_fallback", &RobustParams::convex_fallback},
+                                              {"back_out", &RobustParams::back_out},
+                                              {"restore", &RobustParams::restore},
+                                              {"drop", &RobustParams::drop},
+                                              {"early_release", &RobustParams::early_release},
+                                              {"withdraw", &RobustParams::withdraw},
+                                              {"release_point", &RobustParams::release_point},
+                                              {"release_pose", &RobustParams::release_pose},
+                                              {"object_blockers", &RobustParams::object_blockers},
+                                              {"bevel", &RobustParams::bevel},
+                                              {"early_dock", &RobustParams::early_dock},
+                                              {"face", &RobustParams::face},
+                                              {"narrow", &RobustParams::narrow},
+                                              {"track", &RobustParams::track},
+                                              {"escape", &RobustParams::escape},
+                                              {"widen", &RobustParams::widen},
+                                              {"fragments", &RobustParams::fragments},
+                                              {"memory", &RobustParams::memory},
+                                              {"persist", &RobustParams::persist},
+                                              {"redrop", &RobustParams::redrop},
+                                              {"defer", &RobustParams::defer}};
 
 // How often each recovery of the robust variant fired in a run.
 struct RecoveryCounts {
@@ -261,6 +301,8 @@ struct RecoveryCounts {
   int early_releases = 0;  // RELEASEs ended short of the centroid with the object in the region
   int withdrawals = 0;     // grasps that backed the pair out of a narrow place
   int release_points = 0;  // RELEASEs sent elsewhere in the region, its centroid cut off
+  int release_poses = 0;   // RELEASEs set down from a pose, no heading-free point reachable
+  int object_fixes = 0;    // Fix-mode entries for objects on a grasp side or a release pose
   int early_docks = 0;     // GRASPs docked from where the robot stalled beside the object
   int faces = 0;           // turns toward the goal after a back-up
   int narrows = 0;         // Fix-mode entries for objects narrowing a passage the law failed
@@ -283,6 +325,8 @@ inline constexpr RecoveryField kRecoveryFields[] = {
     {"early_releases", &RecoveryCounts::early_releases},
     {"withdrawals", &RecoveryCounts::withdrawals},
     {"release_points", &RecoveryCounts::release_points},
+    {"release_poses", &RecoveryCounts::release_poses},
+    {"object_fixes", &RecoveryCounts::object_fixes},
     {"early_docks", &RecoveryCounts::early_docks},
     {"faces", &RecoveryCounts::faces},
     {"narrows", &RecoveryCounts::narrows},

@@ -8,6 +8,7 @@
 #include "core/error.h"
 #include "core/stopwatch.h"
 #include "executive/interface_layer.h"
+#include "executive/release_pose.h"
 #include "executive/targets.h"
 #include "topology/topology_check.h"
 
@@ -67,7 +68,8 @@ Advance plan_disassemble(const Context& c, ActionState& a, double radius, const 
     a.target = drop_point(c, a, res.freespace, radius, center, rho);
   }
   if (!a.target || !geometry::contains(res.freespace, *a.target)) {
-    a.target = disassemble_target(res.freespace, c.map, a.object, c.regions, radius);
+    a.target = disassemble_target(res.freespace, c.map, a.object, c.regions, radius,
+                                  kDisassembleInset, c.keep_clear);
     if (!a.target) {
       out.kind = Advance::kStuck;
       out.reason = "the pair's freespace has no edge to disassemble the object toward";
@@ -78,32 +80,40 @@ Advance plan_disassemble(const Context& c, ActionState& a, double radius, const 
   return out;
 }
 
-Advance plan_grasp(const Context& c, ActionState& a, const Pose& pose) {
+// The cause "closed by objects" (docs/executive.md, "Recoveries"), met where the plan would
+// end the action infeasible: the recovery policy's next step, else infeasible with `reason`.
+Advance closed_by_objects(const Context& c, ActionState& a, const Pose& pose, Tick tick,
+                          std::string reason, double radius, const Point& center) {
+  Trigger closed{Cause::kClosedByObjects, std::move(reason), radius, center};
+  if (std::optional<Advance> next = recover(c, a, pose, closed, tick)) return *next;
+  return infeasible(closed.reason);
+}
+
+Advance plan_grasp(const Context& c, ActionState& a, const Pose& pose, Tick tick) {
   Advance out;
   const double r = c.p.robot_radius;
+  const double rp = plan_radius(c);
+  auto closed = [&](std::string reason) {
+    return closed_by_objects(c, a, pose, tick, std::move(reason), rp, pose.x);
+  };
   const std::vector<GraspCandidate> candidates =
       grasp_candidates(c.map, a.object, r, pose.x, c.p.grasp);
   if (candidates.empty()) {
-    out.kind = Advance::kInfeasible;
-    out.reason = "no side of " + a.object + " leaves room to dock and to carry it (" +
-                 std::to_string(c.p.grasp.samples) + " directions tried)";
-    return out;
+    return closed("no side of " + a.object + " leaves room to dock and to carry it (" +
+                  std::to_string(c.p.grasp.samples) + " directions tried)");
   }
   const auto& ids = c.map.movable_ids();
 
   // Exact freespaces: the robot's (every object an obstacle) and the pair's once gripped (the
   // object carried, radius r + ρ_i + pair_margin).
   // F from the topology check with x* = x (throws when the robot is not in its freespace).
-  const double rp = plan_radius(c);
   const topology::TopologyResult here = timed_check(c, rp, pose.x, pose.x);
   const geometry::Region* f = &here.freespace;
   const geometry::RegionSet pair_free = pair_freespace(c, a.object);
   c.topology_checks += 1;
   const auto [reachable, fallback] = choose_side(c, a, candidates, pair_free, *f);
   if (fallback == nullptr) {
-    out.kind = Advance::kInfeasible;
-    out.reason = "no side of " + a.object + " from which the robot–object pair would be free";
-    return out;
+    return closed("no side of " + a.object + " from which the robot–object pair would be free");
   }
   a.target = (reachable != nullptr ? reachable : fallback)->approach;
   if (reachable == nullptr) {
@@ -111,19 +121,15 @@ Advance plan_grasp(const Context& c, ActionState& a, const Pose& pose) {
     const topology::TopologyResult res = timed_check(c, r, pose.x, *a.target);
     ++c.topology_checks;
     if (res.verdict == topology::Verdict::kBlockedByFixed) {
-      out.kind = Advance::kInfeasible;
-      out.reason =
-          "fixed obstacles separate the robot from every side of " + a.object + ": " + res.reason;
-      return out;
+      return closed("fixed obstacles separate the robot from every side of " + a.object + ": " +
+                    res.reason);
     }
     if (res.verdict == topology::Verdict::kBlockedByObjects) {
       for (std::size_t i : res.blocking) {
         if (ids[i] != a.object) out.blocking.push_back(ids[i]);
       }
       if (out.blocking.empty()) {
-        out.kind = Advance::kInfeasible;
-        out.reason = "only " + a.object + " itself separates the robot from its free sides";
-        return out;
+        return closed("only " + a.object + " itself separates the robot from its free sides");
       }
       out.kind = Advance::kBlocked;
       out.reason = res.reason;
@@ -134,7 +140,62 @@ Advance plan_grasp(const Context& c, ActionState& a, const Pose& pose) {
   return out;
 }
 
+// Objects cut ℓ's centroid off and one of them lies in ℓ: Fix mode clears ℓ, as in the paper
+// (Fig. 5), rather than setting the object down beside the occupant.
+bool occupied(const Context& c, const topology::TopologyResult& res, const RegionOfInterest& l) {
+  if (res.verdict != topology::Verdict::kBlockedByObjects) return false;
+  for (std::size_t i : res.blocking) {
+    if (geometry::contains(l.polygon, c.map.movable()[i].center)) return true;
+  }
+  return false;
+}
+
+// RELEASE, robust variant, the centroid cut off: anywhere in ℓ that the pair reaches now, as
+// clear as ℓ allows (release_point); else a pose from which the object is set down in ℓ
+// (release_pose), ties going to the lead-in nearest the pair's centre. Sets x*; false when
+// neither applies (the centroid's verdict stands).
+bool release_elsewhere(const Context& c, ActionState& a, const topology::TopologyResult& res,
+                       double radius, const Point& center) {
+  const RegionOfInterest& l = region(c, a.region);
+  const double enough = 2 * (c.p.robot_radius + max_object_radius(c));
+  if (c.p.robust.release_point) {
+    const double inset = c.p.robot_radius + c.p.grasp.pair_margin + 2 * c.p.goal_tolerance;
+    if (auto p = release_point(res.freespace, l, c.map, a.object, inset, enough, kReleaseStep)) {
+      a.target = *p;
+      a.pose.reset();
+      ++c.recoveries.release_points;
+      return true;
+    }
+  }
+  if (!c.p.robust.release_pose || occupied(c, res, l)) return false;
+  const std::optional<ReleasePose> pose =
+      release_pose({res.freespace}, l, c.map, a.object, center, pose_params(c, radius));
+  if (!pose) return false;
+  // The pose is chosen again whenever the plan is (the map changed); the stage is kept while
+  // the pose is the same.
+  if (!a.pose || a.pose->pair != pose->pair || a.pose->lead_in != pose->lead_in) {
+    a.pose_stretch = false;
+    ++c.recoveries.release_poses;
+  }
+  a.pose = pose;
+  a.target = a.pose_stretch ? pose->pair : pose->lead_in;
+  return true;
+}
+
 }  // namespace
+
+ReleasePoseParams pose_params(const Context& c, double radius) {
+  ReleasePoseParams pp;
+  pp.lead = c.p.robot_radius + c.p.grasp.dock_gap;
+  pp.clearance = radius + kPoseSlack;
+  pp.stretch = radius;
+  pp.inside = kPoseInside;
+  pp.approach = kPoseApproach;
+  pp.enough = 2 * (c.p.robot_radius + max_object_radius(c));
+  pp.step = kReleaseStep;
+  pp.headings = kPoseHeadings;
+  return pp;
+}
 
 bool knowledge_changed(const Context& c, const ActionState& a) {
   return c.map.familiar().size() != a.plan_familiar || c.map.carried() != a.plan_carried ||
@@ -143,8 +204,8 @@ bool knowledge_changed(const Context& c, const ActionState& a) {
 
 // The action's plan (paper §IV, §V): x* and the topology check's verdict; GRASP and
 // DISASSEMBLE have their own.
-Advance plan(const Context& c, ActionState& a, const Pose& pose) {
-  if (a.kind == ActionKind::kGrasp) return plan_grasp(c, a, pose);
+Advance plan(const Context& c, ActionState& a, const Pose& pose, Tick tick) {
+  if (a.kind == ActionKind::kGrasp) return plan_grasp(c, a, pose, tick);
   Advance out;
   const std::optional<std::string> carried = c.map.carried();
   const auto [rho, radius, center] = moving(c, a, pose);
@@ -154,20 +215,14 @@ Advance plan(const Context& c, ActionState& a, const Pose& pose) {
   const topology::TopologyResult res = timed_check(c, radius, center, target);
   ++c.topology_checks;
   a.target = target;
-  if (a.kind == ActionKind::kRelease && c.p.robust.release_point && carried == a.object &&
+  if (a.kind == ActionKind::kRelease && carried == a.object &&
       res.verdict != topology::Verdict::kReachable) {
-    // Robust variant: the centroid is cut off; anywhere in ℓ that the pair reaches now, as
-    // clear as ℓ allows.
-    const double inset = c.p.robot_radius + c.p.grasp.pair_margin + 2 * c.p.goal_tolerance;
-    const double enough = 2 * (c.p.robot_radius + max_object_radius(c));
-    if (auto p = release_point(res.freespace, region(c, a.region), c.map, a.object, inset, enough,
-                               kReleaseStep)) {
-      a.target = *p;
-      ++c.recoveries.release_points;
+    if (release_elsewhere(c, a, res, radius, center)) {
       remember_plan(c, a);
       return out;
     }
   }
+  a.pose.reset();
   switch (res.verdict) {
     case topology::Verdict::kReachable:
       remember_plan(c, a);
@@ -177,7 +232,13 @@ Advance plan(const Context& c, ActionState& a, const Pose& pose) {
         // Robust variant: a passage only the contact margin closes is taken at the bare radius
         // (the paper's), for this action only.
         a.bare = true;
-        return plan(c, a, pose);
+        return plan(c, a, pose, tick);
+      }
+      if (a.kind == ActionKind::kRelease && carried == a.object) {
+        return closed_by_objects(
+            c, a, pose, tick,
+            "fixed obstacles separate x* = " + point_text(target) + ": " + res.reason, radius,
+            center);
       }
       out.kind = Advance::kInfeasible;
       out.reason = "fixed obstacles separate x* = " + point_text(target) + ": " + res.reason;

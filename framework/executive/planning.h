@@ -8,6 +8,8 @@
 
 #include "executive/action.h"
 #include "executive/context.h"
+#include "executive/recovery.h"
+#include "executive/release_pose.h"
 #include "geometry/polygon.h"
 
 namespace rearm::executive {
@@ -16,9 +18,13 @@ namespace rearm::executive {
 // from what the action's plan was computed for.
 bool knowledge_changed(const Context& c, const ActionState& a);
 // x* and the verdict: kCommand when x* is reachable (the plan remembered), else kInfeasible,
-// kBlocked (B_M) or kStuck; throws topology::CenterNotFree when the centre is not free.
-Advance plan(const Context& c, ActionState& a, const Pose& pose);
+// kBlocked (B_M) or kStuck; throws topology::CenterNotFree when the centre is not free. Where
+// the movable objects alone leave no grasp side or release pose, the cause "closed by objects"
+// asks the recovery policy first.
+Advance plan(const Context& c, ActionState& a, const Pose& pose, Tick tick);
 void remember_plan(const Context& c, ActionState& a);
+// The release pose's parameters (release_pose.h) for the pair's dilation radius `radius`.
+ReleasePoseParams pose_params(const Context& c, double radius);
 // The exact freespace of the pair once `object` is gripped (the object carried, radius
 // r + contact margin + ρ_i + pair_margin): F_list of Appendix III.
 geometry::RegionSet pair_freespace(const Context& c, const std::string& object);

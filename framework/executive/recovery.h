@@ -1,7 +1,8 @@
 // The robust variant's recoveries (docs/executive.md, "Recoveries: causes, units and the policy
 // table"): an action that meets a cause (the progress monitor fired, its centre left the
 // freespace, the law has no command, x* was cut off, the guide's way was closed by memory, the
-// back-ups were spent) asks the policy, which tries the units its table names for the cause and
+// back-ups were spent, the plan found no grasp side or release pose among the objects) asks the
+// policy, which tries the units its table names for the cause and
 // the action's kind, in order, each only when its switches are on. The first that applies gives
 // the action's next step; when none does, the site that met the cause ends the action as the
 // paper does.
@@ -16,9 +17,18 @@
 
 namespace rearm::executive {
 
-enum class Cause { kStalled, kCentreNotFree, kNoLaw, kGoalCutOff, kClosedByMemory, kBackUpsSpent };
-inline constexpr std::size_t kCauseCount = 6;
-// "stalled", "centre not free", "no law", "goal cut off", "closed by memory", "back-ups spent".
+enum class Cause {
+  kStalled,
+  kCentreNotFree,
+  kNoLaw,
+  kGoalCutOff,
+  kClosedByMemory,
+  kBackUpsSpent,
+  kClosedByObjects
+};
+inline constexpr std::size_t kCauseCount = 7;
+// "stalled", "centre not free", "no law", "goal cut off", "closed by memory", "back-ups spent",
+// "closed by objects".
 const char* to_string(Cause cause);
 
 struct Trigger {

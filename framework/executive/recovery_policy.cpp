@@ -22,6 +22,7 @@ constexpr UnitInfo kUnits[kUnitCount] = {
     {Unit::kMemoryBlockers, "memory blockers", &R::fragments, "fragment_fixes"},
     {Unit::kRetarget, "retarget", &R::drop, ""},
     {Unit::kDropShort, "drop short", &R::early_release, "early_releases"},
+    {Unit::kObjectBlockers, "object blockers", &R::object_blockers, "object_fixes"},
 };
 
 constexpr units::UnitFunction* kFunctions[kUnitCount] = {
@@ -37,6 +38,7 @@ constexpr units::UnitFunction* kFunctions[kUnitCount] = {
     units::memory_blockers,
     units::retarget,
     units::drop_short,
+    units::object_blockers,
 };
 
 // The steps. Requirements are today's couplings (docs/executive.md): the contact back-up,
@@ -55,6 +57,7 @@ constexpr Step kMemoryBlockers{Unit::kMemoryBlockers, {&R::memory}};
 constexpr Step kRetarget{Unit::kRetarget};
 constexpr Step kDropShortAtGoal{Unit::kDropShort, {&R::drop}};
 constexpr Step kDropShort{Unit::kDropShort};
+constexpr Step kObjectBlockers{Unit::kObjectBlockers};
 
 constexpr Step kStalledMove[] = {kContactBackUp, kGuide, kNarrow};
 constexpr Step kStalledGrasp[] = {kEarlyDock, kContactBackUp, kGuide, kNarrow};
@@ -66,6 +69,7 @@ constexpr Step kGoalCutOff[] = {kFragmentBlockers};
 constexpr Step kGoalCutOffDisassemble[] = {kRetarget, kDropShortAtGoal};
 constexpr Step kClosedByMemory[] = {kMemoryBlockers};
 constexpr Step kBackUpsSpentDisassemble[] = {kDropShort};
+constexpr Step kClosedByObjects[] = {kObjectBlockers};
 
 // [cause][kind]: MOVE, GRASP, RELEASE, DISASSEMBLE.
 constexpr std::span<const Step> kTable[kCauseCount][4] = {
@@ -75,6 +79,7 @@ constexpr std::span<const Step> kTable[kCauseCount][4] = {
     {kGoalCutOff, kGoalCutOff, kGoalCutOff, kGoalCutOffDisassemble},
     {kClosedByMemory, kClosedByMemory, kClosedByMemory, {}},
     {{}, {}, {}, kBackUpsSpentDisassemble},
+    {{}, kClosedByObjects, kClosedByObjects, {}},
 };
 
 }  // namespace
@@ -93,6 +98,8 @@ const char* to_string(Cause cause) {
       return "closed by memory";
     case Cause::kBackUpsSpent:
       return "back-ups spent";
+    case Cause::kClosedByObjects:
+      return "closed by objects";
   }
   return "?";
 }

@@ -28,8 +28,9 @@ enum class Unit {
   kMemoryBlockers,
   kRetarget,
   kDropShort,
+  kObjectBlockers,
 };
-inline constexpr std::size_t kUnitCount = 12;
+inline constexpr std::size_t kUnitCount = 13;
 
 using Switch = bool RobustParams::*;
 

@@ -94,6 +94,12 @@ struct DropState {
   std::size_t level = 0;
 };
 
+// The object-blockers unit (recovery_object_blockers.cpp): Fix-mode entries it asked for in
+// this action, at most kMaxObjectFixes.
+struct BlockerState {
+  int fixes = 0;
+};
+
 // The units that run at most once per action.
 struct OnceState {
   bool convex_all = false;  // recovery_convex.cpp: convex pieces forced after a singular Dh

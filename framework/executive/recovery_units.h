@@ -32,5 +32,6 @@ UnitFunction fragment_blockers;
 UnitFunction memory_blockers;
 UnitFunction retarget;
 UnitFunction drop_short;
+UnitFunction object_blockers;
 
 }  // namespace rearm::executive::units

@@ -1,5 +1,7 @@
 #include "executive/region.h"
 
+#include <algorithm>
+#include <cmath>
 #include <set>
 
 #include "core/error.h"
@@ -37,6 +39,25 @@ geometry::Point region_target(const RegionOfInterest& region) {
   }
   if (best == nullptr) throw Error("region of interest '" + region.id + "': cannot triangulate");
   return best->centroid();
+}
+
+std::vector<geometry::Point> region_grid(const RegionOfInterest& region, double step,
+                                         double max_points) {
+  geometry::Point lo = region.polygon.vertices.front(), hi = lo;
+  for (const geometry::Point& v : region.polygon.vertices) {
+    lo = lo.cwiseMin(v);
+    hi = hi.cwiseMax(v);
+  }
+  const geometry::Point size = hi - lo;
+  step = std::max(step, std::sqrt(size.x() * size.y() / max_points));
+  step = std::max({step, size.x() / max_points, size.y() / max_points});
+  std::vector<geometry::Point> out{region_target(region)};
+  const int nx = static_cast<int>(std::floor(size.x() / step));
+  const int ny = static_cast<int>(std::floor(size.y() / step));
+  for (int j = 0; j <= ny; ++j) {
+    for (int i = 0; i <= nx; ++i) out.emplace_back(lo.x() + i * step, lo.y() + j * step);
+  }
+  return out;
 }
 
 }  // namespace rearm::executive

@@ -25,4 +25,10 @@ std::vector<RegionOfInterest> validated(const std::vector<RegionOfInterest>& reg
 // triangle is used instead, so the target is always inside the region.
 geometry::Point region_target(const RegionOfInterest& region);
 
+// Candidate points of a region: region_target first, then a grid of spacing `step` (m) over the
+// region's bounding box from its lower-left corner (row by row), coarsened so that it has at
+// most about `max_points` points. Points of the grid may lie outside the region.
+std::vector<geometry::Point> region_grid(const RegionOfInterest& region, double step,
+                                         double max_points);
+
 }  // namespace rearm::executive

@@ -72,6 +72,10 @@ std::optional<Point> drop_point(const Context& c, ActionState& a, const geometry
     for (const Point& x : a.drop.rejected) {
       if ((q - x).norm() < 2 * unit) return false;
     }
+    // RobustParams::object_blockers: not onto the side or pose the objects are moved off.
+    for (const geometry::Disk& k : c.keep_clear) {
+      if ((q - k.center).norm() < k.radius + radius) return false;
+    }
     return clear_of_regions(q, c.p.robot_radius + rho + kDropSlack, c.regions) &&
            (k == need.size() || known_clearance(c.map, q, carried) >= need[k]);
   };

@@ -152,6 +152,8 @@ const std::vector<std::string>& trial_columns() {
                                                    "early_releases",
                                                    "withdrawals",
                                                    "release_points",
+                                                   "release_poses",
+                                                   "object_fixes",
                                                    "early_docks",
                                                    "faces",
                                                    "narrows",

@@ -18,13 +18,7 @@ namespace {
 
 using geometry::Polygon;
 using test_support::rect;
-
-perception::SemanticMap make_map(const perception::World& w, const Point& robot,
-                                 double range = 20) {
-  perception::SemanticMap m(w, perception::Sensor(perception::SensorParams{range}));
-  m.update(robot);
-  return m;
-}
+using test_support::sensed_map;
 
 perception::World open_room() {
   perception::World w;
@@ -36,7 +30,7 @@ perception::World open_room() {
 }
 
 TEST(InterfaceLayer, KnownClearance) {
-  const auto map = make_map(open_room(), Point(1, 1));
+  const auto map = sensed_map(open_room(), Point(1, 1));
   EXPECT_NEAR(known_clearance(map, Point(2, 5)), 2.0, 1e-12);        // P1 and the west wall
   EXPECT_NEAR(known_clearance(map, Point(3.5, 5)), 0.5, 1e-12);      // P1
   EXPECT_NEAR(known_clearance(map, Point(5, 5.5)), -0.5, 1e-12);     // inside P1
@@ -48,7 +42,7 @@ TEST(InterfaceLayer, KnownClearance) {
 
 TEST(InterfaceLayer, KnownClearanceSeesOnlyLocalizedObstacles) {
   // P1 is 3 m away and the sensor range is 1 m: not localized, not an obstacle yet.
-  const auto map = make_map(open_room(), Point(1, 5), 1.0);
+  const auto map = sensed_map(open_room(), Point(1, 5), 1.0);
   EXPECT_NEAR(known_clearance(map, Point(3.5, 5)), 3.5, 1e-12);  // only the west wall
 }
 
@@ -58,7 +52,7 @@ TEST(InterfaceLayer, GraspCandidatesNextToAWall) {
   // x = 0.6 + (0.45 + s) cos a >= 0.2 (s in [0.001, 0.02]) and the pair centre
   // x = 0.6 + 0.2 cos a >= 0.455 (the pair radius). The other walls and
   // objects are far. Pair radius 0.2 + 0.25 + 0.005 = 0.455 binds: cos a >= -0.725.
-  const auto map = make_map(open_room(), Point(5, 8.5));
+  const auto map = sensed_map(open_room(), Point(5, 8.5));
   GraspParams p;
   const Point robot(5, 8.5);
   const auto c = grasp_candidates(map, "M1", 0.2, robot, p);
@@ -93,7 +87,7 @@ std::optional<Point> room_target(const std::vector<perception::UnknownObstacle>&
   w.unknown = unknown;
   w.movable = {{"M1", geometry::Disk{Point(5, 3), 0.25}},
                {"M2", geometry::Disk{Point(2, 4), 0.25}}};
-  perception::SemanticMap map = make_map(w, Point(5, 2.5));
+  perception::SemanticMap map = sensed_map(w, Point(5, 2.5));
   map.set_carried(std::string("M1"));
   const std::vector<RegionOfInterest> regions = {{"l1", rect(8, 2.5, 9, 3.5)}};
   const geometry::Region f{rect(0, 0, 10, 6), {}};
@@ -129,7 +123,7 @@ TEST(InterfaceLayer, DisassembleTargetInsetsHoleEdgesAwayFromTheHole) {
   perception::World w;
   w.workspace = rect(0, 0, 10, 10);
   w.movable = {{"M1", geometry::Disk{Point(0.5, 5), 0.2}}};
-  perception::SemanticMap map = make_map(w, Point(0.5, 4));
+  perception::SemanticMap map = sensed_map(w, Point(0.5, 4));
   map.set_carried(std::string("M1"));
   const geometry::Region f{rect(0, 0, 10, 10), {rect(1, 1, 9, 9)}};
   const std::vector<RegionOfInterest> strips = {{"s", rect(0, 0, 10, 0.3)},
@@ -145,7 +139,7 @@ TEST(InterfaceLayer, DisassembleTargetInsetsHoleEdgesAwayFromTheHole) {
 // wall): docking along the line through the robot and M1's centre, the pair centre 0.2 m from
 // M1 toward the robot must be 0.455 m from the wall, i.e. cos a >= -0.725 as above.
 TEST(InterfaceLayer, GraspFromWhereTheRobotStands) {
-  const auto map = make_map(open_room(), Point(5, 8.5));
+  const auto map = sensed_map(open_room(), Point(5, 8.5));
   GraspParams p;
   const Point m(0.6, 8.0);
   for (const double a : {0.0, 1.0, 2.0, 2.4, 2.5, 3.0}) {
@@ -170,7 +164,7 @@ TEST(InterfaceLayer, GraspFromWhereTheRobotStands) {
 // the row nearest the centroid. Where every candidate is clear enough the centroid itself
 // wins; where F holds no candidate there is none.
 TEST(InterfaceLayer, ReleasePointKeepsTheObjectClearestInsideTheRegion) {
-  const auto map = make_map(open_room(), Point(1, 1));
+  const auto map = sensed_map(open_room(), Point(1, 1));
   const geometry::Region room{rect(0, 0, 10, 10), {}};
   const RegionOfInterest beside{"l", rect(6.2, 4.5, 7.2, 5.5)};
   const double step = 0.05;
@@ -205,7 +199,7 @@ TEST(InterfaceLayer, EarlyStopRule) {
   w.familiar = {{"P1", rect(4.7, 0, 5.3, 2.5)}};
   w.movable = {{"M1", geometry::Disk{Point(2, 3), 0.25}},
                {"M2", geometry::Disk{Point(2, 1), 0.25}}};
-  perception::SemanticMap map = make_map(w, Point(2, 2.5));
+  perception::SemanticMap map = sensed_map(w, Point(2, 2.5));
   map.set_carried(std::string("M1"));
   const std::vector<RegionOfInterest> regions = {{"l1", rect(8, 2.5, 9, 3.5)}};
   EXPECT_TRUE(disassembly_done(Point(3, 3.5), 0.45, 0.2, map, "M1", regions));

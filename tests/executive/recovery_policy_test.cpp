@@ -26,8 +26,9 @@ namespace {
 constexpr const char* kDoc = "docs/executive.md";
 constexpr ActionKind kKinds[] = {ActionKind::kMove, ActionKind::kGrasp, ActionKind::kRelease,
                                  ActionKind::kDisassemble};
-constexpr Cause kCauses[] = {Cause::kStalled,    Cause::kCentreNotFree,  Cause::kNoLaw,
-                             Cause::kGoalCutOff, Cause::kClosedByMemory, Cause::kBackUpsSpent};
+constexpr Cause kCauses[] = {Cause::kStalled,        Cause::kCentreNotFree,  Cause::kNoLaw,
+                             Cause::kGoalCutOff,     Cause::kClosedByMemory, Cause::kBackUpsSpent,
+                             Cause::kClosedByObjects};
 
 std::string trim(std::string s) {
   const auto b = s.find_first_not_of(" `");
@@ -69,7 +70,8 @@ const std::map<std::string, Switch>& switches() {
       {"narrow", &RobustParams::narrow},
       {"fragments", &RobustParams::fragments},
       {"memory", &RobustParams::memory},
-      {"redrop", &RobustParams::redrop}};
+      {"redrop", &RobustParams::redrop},
+      {"object_blockers", &RobustParams::object_blockers}};
   return m;
 }
 

@@ -11,6 +11,12 @@ Polygon rect(double x0, double y0, double x1, double y1) {
   return Polygon{{Point(x0, y0), Point(x1, y0), Point(x1, y1), Point(x0, y1)}};
 }
 
+perception::SemanticMap sensed_map(const perception::World& w, const Point& robot, double range) {
+  perception::SemanticMap m(w, perception::Sensor(perception::SensorParams{range}));
+  m.update(robot);
+  return m;
+}
+
 namespace {
 
 executive::TaskSpec base(const Polygon& workspace) {

@@ -9,6 +9,9 @@
 namespace rearm::test_support {
 
 geometry::Polygon rect(double x0, double y0, double x1, double y1);
+// The semantic map of world `w` after one sensor update (range `range`) at `robot`.
+perception::SemanticMap sensed_map(const perception::World& w, const geometry::Point& robot,
+                                   double range = 20);
 
 // Fig. 3: two rectangular familiar obstacles leave one 1 m passage in a wall across a 10 × 6 m
 // room; a movable object of radius 0.25 m sits in it; region l1 lies beyond the wall. Task
