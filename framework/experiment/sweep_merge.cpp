@@ -1,6 +1,7 @@
 #include "experiment/sweep_merge.h"
 
 #include <algorithm>
+#include <charconv>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -65,6 +66,20 @@ void copy_instances(const fs::path& from, const fs::path& to) {
   }
 }
 
+// The cell index that starts line `n` of a cells.csv; throws rearm::Error naming the file,
+// the line and the field when it is not one.
+std::size_t cell_index(const std::string& line, const fs::path& p, int n) {
+  const std::string field = line.substr(0, line.find(','));
+  std::size_t v = 0;
+  const char* end = field.data() + field.size();
+  const auto [stop, ec] = std::from_chars(field.data(), end, v);
+  if (field.empty() || ec != std::errc() || stop != end) {
+    throw Error("merge: " + p.string() + " line " + std::to_string(n) + ": '" + field +
+                "' is not a cell index (a cells.csv row starts with one)");
+  }
+  return v;
+}
+
 // The shards' cell verdicts (DIR/cells.csv, cell_check.h) united by cell index; "" when no
 // folder has them.
 std::string merged_cells(const std::vector<std::string>& dirs) {
@@ -76,8 +91,8 @@ std::string merged_cells(const std::vector<std::string>& dirs) {
     std::istringstream in(read_all(p));
     std::string line;
     std::getline(in, header);
-    while (std::getline(in, line)) {
-      if (!line.empty()) lines.emplace(std::stoull(line.substr(0, line.find(','))), line);
+    for (int n = 2; std::getline(in, line); ++n) {
+      if (!line.empty()) lines.emplace(cell_index(line, p, n), line);
     }
   }
   if (lines.empty()) return "";

@@ -593,6 +593,14 @@ TEST(CliTest, SweepRefusesCellsThatMissTheirObstacleDensity) {
   const std::string verdicts = slurp(dir + "/s/cells.csv");
   EXPECT_TRUE(contains(verdicts, "0,random_n1_d0.05_side5_u0.5_round,accepted,")) << verdicts;
   EXPECT_TRUE(contains(verdicts, "1,random_n1_d0.45_side5_u0.5_round,refused,")) << verdicts;
+  // A malformed verdict file stops the merge with the file, the line and the field named.
+  {
+    std::ofstream f(dir + "/s/cells.csv", std::ios::app);
+    f << "x1,not_a_cell,accepted,\n";
+  }
+  const Result merged = run("sweep merge " + dir + "/s --out " + dir + "/m");
+  EXPECT_NE(merged.code, 0) << merged.out;
+  EXPECT_TRUE(contains(merged.out, "cells.csv line 4: 'x1' is not a cell index")) << merged.out;
   std::filesystem::remove_all(dir);
 }
 
