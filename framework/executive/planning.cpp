@@ -157,10 +157,10 @@ bool occupied(const Context& c, const topology::TopologyResult& res, const Regio
 bool release_elsewhere(const Context& c, ActionState& a, const topology::TopologyResult& res,
                        double radius, const Point& center) {
   const RegionOfInterest& l = region(c, a.region);
-  const double enough = 2 * (c.p.robot_radius + max_object_radius(c));
+  const ReleasePoseParams pp = pose_params(c, radius);
   if (c.p.robust.release_point) {
     const double inset = c.p.robot_radius + c.p.grasp.pair_margin + 2 * c.p.goal_tolerance;
-    if (auto p = release_point(res.freespace, l, c.map, a.object, inset, enough, kReleaseStep)) {
+    if (auto p = release_point(res.freespace, l, c.map, a.object, inset, pp.enough, pp.step)) {
       a.target = *p;
       a.pose.reset();
       ++c.recoveries.release_points;
@@ -169,7 +169,7 @@ bool release_elsewhere(const Context& c, ActionState& a, const topology::Topolog
   }
   if (!c.p.robust.release_pose || occupied(c, res, l)) return false;
   const std::optional<ReleasePose> pose =
-      release_pose({res.freespace}, l, c.map, a.object, center, pose_params(c, radius));
+      release_pose({res.freespace}, l, c.map, a.object, center, pp);
   if (!pose) return false;
   // The pose is chosen again whenever the plan is (the map changed); the stage is kept while
   // the pose is the same.

@@ -5,9 +5,9 @@
 // (§III-A, §IV, Appendix III); but the topology check names only the objects that separate x*
 // from the robot, not those lying on x* or beside it. The unit asks what the fixed obstacles
 // alone allow:
-//  - GRASP: the nearest side (grasp_candidates with the objects ignored) whose pair centre
-//    lies in the pair's freespace among the fixed obstacles and whose approach point lies in
-//    the robot's component of it;
+//  - GRASP: of the sides (grasp_candidates with the objects ignored) whose pair centre lies in
+//    the pair's freespace among the fixed obstacles and whose approach point lies in the
+//    robot's component of it, the one with the fewest objects in its way, then the nearest;
 //  - RELEASE: a pose in a component of the pair's freespace that objects separate from the
 //    robot, else a pose among the fixed obstacles alone (release_pose).
 // The objects within that side's or pose's clearances, else those the topology check finds
