@@ -16,6 +16,7 @@
 
 #include "core/error.h"
 #include "geometry/cgal_internal.h"
+#include "geometry/distance.h"
 #include "geometry/meeting.h"
 
 namespace rearm::geometry {
@@ -235,6 +236,40 @@ std::vector<Polygon> simple_loops(const std::vector<Point>& cycle) {
   while (path.size() > 1 && path.back() == path.front()) path.pop_back();
   emit(std::move(path));
   return loops;
+}
+
+namespace {
+
+// The vertices of p other than a and b within `touch` of the edge ab, in order along it.
+std::vector<Point> touching(const Polygon& p, std::size_t a, std::size_t b, double touch) {
+  const Point& pa = p.vertices[a];
+  const Point& pb = p.vertices[b];
+  std::vector<std::pair<double, Point>> on;
+  for (std::size_t k = 0; k < p.size(); ++k) {
+    const Point& v = p.vertices[k];
+    if (k == a || k == b || (nearest_on_segment(pa, pb, v) - v).norm() >= touch) continue;
+    on.emplace_back((v - pa).dot(pb - pa), v);
+  }
+  std::sort(on.begin(), on.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+  std::vector<Point> out;
+  for (const auto& [along, v] : on) out.push_back(v);
+  return out;
+}
+
+}  // namespace
+
+std::vector<Polygon> simple_parts(const Polygon& p, double touch, double min_area) {
+  if (checked_polygon(p)) return {p};
+  std::vector<Point> cycle;
+  for (std::size_t i = 0, n = p.size(); i < n; ++i) {
+    cycle.push_back(p.vertices[i]);
+    for (const Point& v : touching(p, i, (i + 1) % n, touch)) cycle.push_back(v);
+  }
+  std::vector<Polygon> out;
+  for (Polygon& loop : simple_loops(cycle)) {
+    if (loop.signed_area() > min_area && checked_polygon(loop)) out.push_back(std::move(loop));
+  }
+  return out;
 }
 
 }  // namespace rearm::geometry

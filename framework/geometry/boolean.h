@@ -26,4 +26,12 @@ bool intersects(const RegionSet& a, const RegionSet& b);
 // area) are dropped.
 std::vector<Polygon> simple_loops(const std::vector<Point>& cycle);
 
+// A polygon as simple polygons: p itself when it is simple (polygon.h's check). Otherwise a
+// boundary that touches itself away from its vertices (a vertex within `touch` of another edge,
+// as rounding leaves a vertex that lies on an edge exactly) gets that vertex inserted into the
+// edge, and the cycle, which then passes through it twice, is cut by simple_loops. The loops of
+// counter-clockwise area above min_area that are simple are returned; the others (zero-area
+// spikes, clockwise loops enclosed by the rest) are dropped.
+std::vector<Polygon> simple_parts(const Polygon& p, double touch, double min_area);
+
 }  // namespace rearm::geometry

@@ -282,6 +282,24 @@ std::optional<RegionSet> chain_pockets(const Polygon& hull, const Polygon& outer
   return out;
 }
 
+// One pocket, merged into the boundary through its lid. A loop cut from a pocket that touched
+// itself (simple_parts) may not reach the hull: it stays a component without a lid.
+void add_pocket(MappedSpace& m, const Dilated& d, const Polygon& outer, double scale, bool cut) {
+  Polygon pocket = drop_flat_vertices(outer);
+  auto lid = find_lid(pocket, m.enclosing, kLidTolerance * scale);
+  if (!lid && !cut) {
+    // A bug, not bad input: every pocket of the hull has an edge on it. Per trial (the sweep's
+    // status `error`, `rearm run`'s exit 1), not `stuck` and not an abort of the whole sweep.
+    throw InvariantViolation(
+        "mapped space: a pocket of the freespace's convex hull has no edge on the hull "
+        "(please report the scene)");
+  }
+  const bool curved = std::any_of(d.sources.begin(), d.sources.end(), [&](const auto& s) {
+    return s.kind != Dilated::Kind::kFamiliar && geometry::contains(outer, s.rep);
+  });
+  m.familiar.push_back(FamiliarComponent{std::move(pocket), lid, curved});
+}
+
 // Pockets between F_k and ∂F_e, each merged into the boundary through its lid.
 void add_pockets(MappedSpace& m, const Dilated& d, double scale, double sliver) {
   std::optional<RegionSet> chained = chain_pockets(m.enclosing, m.freespace.outer);
@@ -290,21 +308,15 @@ void add_pockets(MappedSpace& m, const Dilated& d, double scale, double sliver) 
                                                          geometry::to_set(m.freespace.outer));
   for (const Region& r : pockets) {
     if (r.outer.area() <= sliver) continue;
-    Polygon pocket = drop_flat_vertices(r.outer);
-    auto lid = find_lid(pocket, m.enclosing, kLidTolerance * scale);
-    if (!lid) {
-      // A bug, not bad input: every pocket of the hull has an edge on it. Per trial (the sweep's
-      // status `error`, `rearm run`'s exit 1), not `stuck` and not an abort of the whole sweep.
-      throw InvariantViolation(
-          "mapped space: a pocket of the freespace's convex hull has no edge on the hull "
-          "(please report the scene)");
-    }
-    const bool curved = std::any_of(d.sources.begin(), d.sources.end(), [&](const auto& s) {
-      return s.kind != Dilated::Kind::kFamiliar && geometry::contains(r.outer, s.rep);
-    });
-    m.familiar.push_back(FamiliarComponent{std::move(pocket), lid, curved});
+    // A boundary rounded from the exact Booleans against an inexact hull can touch itself away
+    // from its vertices (a vertex of F_k on its pocket's lid, a zero-area spike along it).
+    const std::vector<Polygon> parts = geometry::simple_parts(r.outer, kFlatVertexDistance, sliver);
+    const bool cut = parts.size() != 1 || parts.front().vertices != r.outer.vertices;
+    for (const Polygon& part : parts) add_pocket(m, d, part, scale, cut);
   }
 }
+// A bug, not bad input: every pocket of the hull has an edge on it. Per trial (the sweep's
+// status `error`, `rearm run`'s exit 1), not `stuck` and not an abort of the whole sweep.
 
 MappedSpace build_full(const SemanticInput& in, double radius, const Point& robot,
                        DilationCache& cache, LoneFragments& lone) {

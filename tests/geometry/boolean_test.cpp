@@ -393,5 +393,58 @@ TEST(BooleanTest, InvalidInputsAreRejectedWithTheirPlace) {
   EXPECT_THROW(subtract(good, RegionSet{Region{square(0, 0, 1), {poly({})}}}), Error);
 }
 
+// simple_parts: a boundary that touches itself away from its vertices, against validated()'s
+// exact check and the shoelace area of hand-built pieces.
+TEST(BooleanTest, SimplePartsReturnsASimplePolygonAsItIs) {
+  const Polygon square{{{0, 0}, {2, 0}, {2, 2}, {0, 2}}};
+  const std::vector<Polygon> parts = simple_parts(square, 1e-6, 1e-12);
+  ASSERT_EQ(parts.size(), 1u);
+  EXPECT_EQ(parts[0].vertices, square.vertices);
+}
+
+TEST(BooleanTest, SimplePartsDropsASpikeAlongAnEdge) {
+  // The triangle (2,0), (4,0), (4,2) and a zero-area spike from (2,0) back to (0,0) along the
+  // bottom edge; the spike's tip lies on that edge exactly, then 1e-13 across it.
+  for (const double off : {0.0, -1e-13}) {
+    const Polygon p{{{0, 0}, {4, 0}, {4, 2}, {2, off}}};
+    EXPECT_THROW(validated(p), Error);
+    const std::vector<Polygon> parts = simple_parts(p, 1e-6, 1e-12);
+    ASSERT_EQ(parts.size(), 1u) << off;
+    EXPECT_NO_THROW(validated(parts[0]));
+    EXPECT_NEAR(parts[0].signed_area(), 2.0, kTol);
+    EXPECT_EQ(std::count(parts[0].vertices.begin(), parts[0].vertices.end(), Point(0, 0)), 0);
+  }
+}
+
+// The pocket that ended a crowded trial (N = 8, footprint 0.05) with "convex_partition polygon:
+// not simple": a dilated disk's arc and the hull edge (0.467, 1.142)-(2.281, 0.632), which the
+// arc's vertex (1.3076, 0.9058) touches. One simple part remains, with the spike's tip gone and
+// the pocket's area kept.
+TEST(BooleanTest, SimplePartsMendsTheCrowdedPocket) {
+  const Polygon pocket{
+      {{1.2265862161651371, 1.115684254505924},   {1.2674706959096169, 0.98090618718608547},
+       {1.3076386511656759, 0.90575722853135565}, {0.46724993615498484, 1.1420313067530627},
+       {2.2810356794310884, 0.63208805438706284}, {2.3303955534596721, 0.65847145672446916},
+       {2.4392684382488206, 0.74782112416725577}, {2.5286181056916073, 0.85669400895640457},
+       {2.595010898176076, 0.98090618718608491},  {2.6358953779205563, 1.1156842545059238},
+       {2.6497003772967478, 1.25584876537323},    {2.6358953779205563, 1.3960132762405359},
+       {2.595010898176076, 1.5307913435603746},   {2.5286181056916073, 1.6550035217900554},
+       {2.4392684382488206, 1.7638764065792041},  {2.3303955534596721, 1.8532260740219906},
+       {2.2061833752299913, 1.9196188665064595},  {2.0714053079101529, 1.9605033462509396},
+       {1.9312407970428467, 1.9743083456271311},  {1.7910762861755407, 1.9605033462509396},
+       {1.6562982188557021, 1.9196188665064595},  {1.5320860406260213, 1.8532260740219908},
+       {1.4232131558368726, 1.7638764065792041},  {1.3338634883940861, 1.6550035217900554},
+       {1.2674706959096171, 1.5307913435603746},  {1.2265862161651371, 1.3960132762405362},
+       {1.2127812167889456, 1.25584876537323}}};
+  EXPECT_THROW(validated(pocket), Error);
+  const std::vector<Polygon> parts = simple_parts(pocket, 1e-6, 1e-12);
+  ASSERT_EQ(parts.size(), 1u);
+  EXPECT_NO_THROW(validated(parts[0]));
+  EXPECT_EQ(parts[0].size(), pocket.size() - 1);  // the spike's tip out
+  const Point tip(0.46724993615498484, 1.1420313067530627);
+  EXPECT_EQ(std::count(parts[0].vertices.begin(), parts[0].vertices.end(), tip), 0);
+  EXPECT_NEAR(parts[0].signed_area(), pocket.signed_area(), 1e-9);
+}
+
 }  // namespace
 }  // namespace rearm::geometry
