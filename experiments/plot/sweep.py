@@ -16,6 +16,12 @@ Reads DIR/trials.csv (one row per trial) and DIR/sweep.yaml (only its `name:` li
   DIR/path_vs_n.png           median and IQR of the robot path length vs N
   DIR/solved_within_t.png     fraction of trials solved within t, per method, log axis
 
+and, when the sweep has more than one footprint (crowded rooms, crowded_figures.py):
+
+  DIR/success_vs_footprint.png    success rate vs footprint, a panel per N
+  DIR/time_vs_n_by_footprint.png  median and IQR of the time vs N, a panel per footprint
+  DIR/success_vs_difficulty.png   success rate vs each difficulty column
+
 The time of a trial is its planning time where the row has one (the offline baselines) and its
 compute time otherwise (rearm: mission + topology + rebuilds + control). Medians of time,
 actions and path are over the successful trials of a cell (no success: no point, "-" in the
@@ -26,9 +32,10 @@ warning; empty or non-numeric fields count as missing.
 import os
 import sys
 
-# The three modules sit beside this file, which is sys.path[0] when it runs as a script (from
+# The modules sit beside this file, which is sys.path[0] when it runs as a script (from
 # experiments/plot or installed in share/rearm/plot): the data and statistics, report.md, the
-# figures.
+# figures, the crowded-room figures.
+import crowded_figures
 import sweep_data
 import sweep_figures
 import sweep_report
@@ -43,11 +50,15 @@ def main(argv):
         print("sweep.py: %s has no trials.csv" % d, file=sys.stderr)
         return 1
     s = sweep_data.Sweep(d)
-    sweep_report.write_report(s, os.path.join(d, "report.md"), sweep_figures.FIGURES)
+    figures = list(sweep_figures.FIGURES)
+    if s.trials and crowded_figures.applies(s):
+        figures += crowded_figures.FIGURES
+    sweep_report.write_report(s, os.path.join(d, "report.md"), figures)
     if s.trials:
         sweep_figures.write_figures(s)
-        print("wrote %s/report.md and %d figures (%d trials)"
-              % (d, len(sweep_figures.FIGURES), len(s.trials)))
+        crowded_figures.write_figures(s, sweep_figures.presentation_order(s.methods),
+                                      lambda name: os.path.join(d, name))
+        print("wrote %s/report.md and %d figures (%d trials)" % (d, len(figures), len(s.trials)))
     else:
         print("wrote %s/report.md (no trials: no figures)" % d)
     return 0

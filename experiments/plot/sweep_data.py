@@ -28,6 +28,10 @@ NOT_RECOVERIES = {"replans"}
 # ----------------------------------------------------------------------------- reading
 
 
+FOOTPRINT_DIGITS = 4
+DIFFICULTY_COLUMNS = ("goal_cycle_objects", "goals_occupied", "walled_in")
+
+
 def warn(msg):
     prog = os.path.basename(sys.argv[0]) if sys.argv and sys.argv[0] else "sweep_data"
     print("%s: warning: %s" % (prog, msg), file=sys.stderr)
@@ -128,6 +132,14 @@ class Trial:
         # kept apart in the table when they do vary.
         self.variant = (r.get("unknown_fraction", ""), r.get("unknown_shapes", ""),
                         r.get("workspace_rule", ""))
+        # The objects' share of the floor (the room sized from N and it), rounded: the column
+        # holds the achieved value, which differs from the sweep file's by rounding only.
+        f = number(r.get("footprint_density"))
+        self.footprint = round(f, FOOTPRINT_DIGITS) if f is not None else None
+        # Difficulty of the instance (experiments/sweeps/README.md): objects on a cycle of the
+        # goal-on-start dependency graph, objects whose goal another object occupies, objects
+        # walled in by other objects at the start.
+        self.difficulty = {k: number(r.get(k)) for k in DIFFICULTY_COLUMNS}
 
 
 # ----------------------------------------------------------------------------- statistics
@@ -260,6 +272,7 @@ class Sweep:
         self.classes = ordered((x.cls for x in t), KNOWN_CLASSES)
         self.ns = sort_numbers(x.n for x in t)
         self.densities = sort_numbers(x.density for x in t)
+        self.footprints = sort_numbers(x.footprint for x in t)
         self.variants = sorted({x.variant for x in t})
         self.revisions = sorted({x.revision for x in t} - {""})
         self.hosts = sorted({x.host for x in t} - {""})

@@ -75,5 +75,62 @@ class EntryPointTest(unittest.TestCase):
         self.assertIn("has no trials.csv", run.stderr)
 
 
+def write_crowded_sweep(d):
+    """rearm and birrt at N = 4 and 8, footprints written as the sweep writes them (0.05 off by
+    rounding), goal-cycle counts 0 to 6; rearm succeeds where the trial index is not 0 mod 4."""
+    header = ("method,class,objects,target_density,footprint_density,goal_cycle_objects,"
+              "goals_occupied,walled_in,status,success,planning_time_s,compute_time_s,revision\n")
+    lines = [header]
+    for i in range(32):
+        m = ["rearm", "birrt"][i % 2]
+        n = [4, 8][(i // 2) % 2]
+        f = ["0.049999999999999996", "0.08000000000000002"][(i // 4) % 2]
+        ok = m == "birrt" or i % 8 != 0
+        lines.append("%s,random,%d,0.05,%s,%d,0,0,%s,%d,,%.3f,abc\n" % (
+            m, n, f, i % 7, "completed" if ok else "stuck", ok, 0.1 * (i + 1)))
+    with open(os.path.join(d, "trials.csv"), "w") as f:
+        f.writelines(lines)
+    with open(os.path.join(d, "sweep.yaml"), "w") as f:
+        f.write("name: crowded-synthetic\n")
+
+
+@unittest.skipUnless(HAS_MATPLOTLIB, "no matplotlib")
+class CrowdedFiguresTest(unittest.TestCase):
+    def test_footprints_grouped_and_counted(self):
+        import crowded_figures
+        import sweep_data
+        with tempfile.TemporaryDirectory() as d:
+            write_crowded_sweep(d)
+            s = sweep_data.Sweep(d)
+        self.assertEqual(s.footprints, [0.05, 0.08])
+        # rearm, N = 4, footprint 0.05: trials 0 and 8 and 16 and 24 (i % 8 == 0: failed) only.
+        c = crowded_figures.pooled(s, "rearm", n=4, footprint=0.05)
+        self.assertEqual((c.n, c.k), (4, 0))
+        c = crowded_figures.pooled(s, "rearm", n=8, footprint=0.05)  # i = 2, 10, 18, 26
+        self.assertEqual((c.n, c.k), (4, 4))
+        # Goal-cycle counts 4, 5 and 6 fall into the "4+" point.
+        capped = [t for t in s.trials if crowded_figures.difficulty_value(
+            t, "goal_cycle_objects") == crowded_figures.DIFFICULTY_CAP]
+        self.assertEqual(len(capped), sum(1 for i in range(32) if i % 7 >= 4))
+
+    def test_three_more_figures_only_with_two_footprints(self):
+        import crowded_figures
+        with tempfile.TemporaryDirectory() as d:
+            write_crowded_sweep(d)
+            run = subprocess.run([sys.executable, os.path.join(PLOT_DIR, "sweep.py"), d],
+                                 capture_output=True, text=True)
+            self.assertEqual(run.returncode, 0, run.stderr)
+            self.assertIn("report.md and 9 figures (32 trials)", run.stdout)
+            for name, _ in crowded_figures.FIGURES:
+                self.assertGreater(os.path.getsize(os.path.join(d, name)), 0, name)
+        with tempfile.TemporaryDirectory() as d:
+            write_sweep(d)  # no footprint column
+            run = subprocess.run([sys.executable, os.path.join(PLOT_DIR, "sweep.py"), d],
+                                 capture_output=True, text=True)
+            self.assertIn("report.md and 6 figures", run.stdout)
+            for name, _ in crowded_figures.FIGURES:
+                self.assertFalse(os.path.exists(os.path.join(d, name)), name)
+
+
 if __name__ == "__main__":
     unittest.main()
