@@ -13,6 +13,7 @@
 #include "command.h"
 #include "core/error.h"
 #include "core/file_io.h"
+#include "core/text.h"
 #include "experiment/cell_check.h"
 #include "experiment/csv.h"
 #include "experiment/ompl_log.h"
@@ -23,6 +24,7 @@
 #include "experiment/sweep_runner.h"
 #include "options.h"
 #include "python_plot.h"
+#include "scenario/random_instance.h"
 #include "scenario/sweep_file.h"
 
 namespace rearm::cli {
@@ -30,26 +32,34 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr const char* kFooter =
-    "Runs a Monte Carlo sweep (format: experiments/sweeps/README.md): every method of the file\n"
-    "on seeded random instances of every cell (goal class x object count x target obstacle\n"
-    "density x unknown fraction x unknown shapes), `seeds` instances per cell, on T threads\n"
-    "(oneTBB). One row per trial is appended to DIR/trials.csv as it ends; a rerun with the\n"
-    "same --out runs only the trials that are missing (a row cut by an interruption is dropped\n"
-    "and run again). Every instance is kept as DIR/instances/<name>.yaml for rearm run and\n"
-    "rearm baseline. Progress goes to stderr.\n"
-    "Before any trial, every instance of the cells to run is generated: a cell with an instance\n"
-    "that cannot be generated or misses its target obstacle density by more than 0.02 is\n"
-    "refused, and the sweep stops listing the refused cells (`refused_cells: skip` in the file\n"
-    "runs the others); the verdicts go to DIR/cells.csv. --check-cells does only that.\n"
-    "--shard I/N: run only the instances whose index is I mod N (0 <= I < N), each with all\n"
-    "its methods; merge the shards' folders after.\n"
-    "--checked: rearm's trials check the closed loop's invariants on every tick (finite\n"
-    "commands, no overlap beyond Box2D's slop, det Dh > 0, the law's model point in the model\n"
-    "freespace); a violation ends the trial with status error and names it.\n"
-    "'rearm sweep merge --help' and 'rearm sweep report --help' describe the other two.\n"
-    "Exit: 0 when every trial ran (whatever its outcome), 1 when a trial ended in `error`,\n"
-    "2 for bad usage or an invalid sweep file.";
+// The help text; the density tolerance is the generator's own (random_instance.h).
+std::string footer() {
+  return std::string(
+             "Runs a Monte Carlo sweep (format: experiments/sweeps/README.md): every method of\n"
+             "the file on seeded random instances of every cell (goal class x object count x\n"
+             "target obstacle density x footprint x unknown fraction x unknown shapes), `seeds`\n"
+             "instances per cell, on T threads (oneTBB). One row per trial is appended to\n"
+             "DIR/trials.csv as it ends; a rerun with the same --out runs only the trials that\n"
+             "are missing (a row cut by an interruption is dropped and run again). Every instance\n"
+             "is kept as DIR/instances/<name>.yaml for rearm run and rearm baseline. Progress\n"
+             "goes to stderr.\n"
+             "Before any trial, every instance of the cells to run is generated: a cell with an\n"
+             "instance that cannot be generated or misses its target obstacle density by more\n"
+             "than ") +
+         fixed(scenario::kDensityTolerance, 2) +
+         " is refused, and the sweep stops listing the refused cells\n"
+         "(`refused_cells: skip` in the file runs the others); the verdicts go to\n"
+         "DIR/cells.csv. --check-cells does only that.\n"
+         "--shard I/N: run only the instances whose index is I mod N (0 <= I < N), each with all\n"
+         "its methods; merge the shards' folders after.\n"
+         "--checked: rearm's trials check the closed loop's invariants on every tick (finite\n"
+         "commands, no overlap beyond Box2D's slop, det Dh > 0, the law's model point in the "
+         "model\n"
+         "freespace); a violation ends the trial with status error and names it.\n"
+         "'rearm sweep merge --help' and 'rearm sweep report --help' describe the other two.\n"
+         "Exit: 0 when every trial ran (whatever its outcome), 1 when a trial ended in `error`,\n"
+         "2 for bad usage or an invalid sweep file.";
+}
 
 constexpr int kMaxThreads = 256;
 
@@ -202,7 +212,7 @@ void add_report(CLI::App& sweep, SweepArgs& a) {
 Command add_sweep(CLI::App& program) {
   CLI::App* c = program.add_subcommand(
       "sweep", "Monte Carlo sweeps of rearm and the baselines (run, merge, report)");
-  c->footer(kFooter);
+  c->footer(footer());
   c->require_subcommand(0, 1);
   auto a = std::make_shared<SweepArgs>();
   c->add_option("SWEEP", a->path, "the sweep file (experiments/sweeps/README.md)")
