@@ -290,7 +290,9 @@ Advance navigate(const Context& c, ActionState& a, const Pose& pose, double t, d
     if (b.center_not_free) {
       return centre_not_free(c, a, pose, b.reason, {rho, radius, center}, Tick{t, dt});
     }
-    if (b.kind != Advance::kCommand) return b;
+    // Not built, yet a command: a recovery's stop tick (drop short opens the gripper next);
+    // there is no law, guide or radius to go on with.
+    if (b.kind != Advance::kCommand || !a.built) return b;
   }
   // The guide's waypoints (robust variant): passed ones are dropped, the next is the law's goal.
   const double reach = a.guide.tracking ? kTrackReach : c.p.guide.reach;

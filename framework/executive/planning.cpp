@@ -55,6 +55,18 @@ std::pair<const GraspCandidate*, const GraspCandidate*> choose_side(
   return {reachable, fallback};
 }
 
+// The disks the paper's disassembly target keeps away from: Context::keep_clear, and the drop
+// points a recovery rejected (the retarget and redrop units: a target cut off by a fragment the
+// topology check does not model would be chosen again, tick after tick, until the units' budget
+// is spent on one point), with the clearance drop_point keeps from them.
+std::vector<geometry::Disk> keep_off_rejected(const Context& c, const ActionState& a) {
+  std::vector<geometry::Disk> keep = c.keep_clear;
+  const double unit = c.p.robot_radius + max_object_radius(c);
+  for (const Point& x : a.drop.rejected)
+    keep.push_back(geometry::Disk{x, kRejectedDropRadius * unit});
+  return keep;
+}
+
 // DISASSEMBLE's x* (paper §V-B): the midpoint of an edge of the pair's freespace F, kept while it
 // stays in F so the target does not jump as the map grows. Robust variant: the nearest point of
 // F where the object can be dropped clear of everything (drop_clear), when there is one.
@@ -69,7 +81,7 @@ Advance plan_disassemble(const Context& c, ActionState& a, double radius, const 
   }
   if (!a.target || !geometry::contains(res.freespace, *a.target)) {
     a.target = disassemble_target(res.freespace, c.map, a.object, c.regions, radius,
-                                  kDisassembleInset, c.keep_clear);
+                                  kDisassembleInset, keep_off_rejected(c, a));
     if (!a.target) {
       out.kind = Advance::kStuck;
       out.reason = "the pair's freespace has no edge to disassemble the object toward";

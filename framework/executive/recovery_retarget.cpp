@@ -1,7 +1,11 @@
 // Recovery unit "retarget" (RobustParams::drop; goal cut off, DISASSEMBLE): a newly seen unknown
 // fragment took the drop point (the topology knowledge, which re-plans, is unchanged): another
 // is chosen; after kMaxDropRetargets (ActionState::retargets), the paper's target
-// (disassemble_target) and early stop serve, as near as the pair's freespace allows.
+// (disassemble_target) and early stop serve, as near as the pair's freespace allows. Every
+// target chosen after a rejection, drop point or the paper's, keeps kRejectedDropRadius (r +
+// max ρ) from the rejected ones (measured: the paper's target, which the topology check picks
+// without the fragments, was chosen again nine times in one tick, spending the budget on one
+// point).
 #include "executive/recovery_units.h"
 #include "executive/targets.h"
 

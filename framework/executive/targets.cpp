@@ -70,7 +70,7 @@ std::optional<Point> drop_point(const Context& c, ActionState& a, const geometry
   const std::string carried = c.map.carried().value_or("");
   auto accept = [&](const Point& q, std::size_t k) {
     for (const Point& x : a.drop.rejected) {
-      if ((q - x).norm() < 2 * unit) return false;
+      if ((q - x).norm() < kRejectedDropRadius * unit) return false;
     }
     // RobustParams::object_blockers: not onto the side or pose the objects are moved off.
     for (const geometry::Disk& k : c.keep_clear) {

@@ -11,6 +11,10 @@
 
 namespace rearm::executive {
 
+// A drop point that a recovery rejected (ActionState::drop.rejected) keeps later targets this
+// many times r + max ρ away: a fragment that took it likely covers its surroundings too.
+inline constexpr double kRejectedDropRadius = 2;
+
 // RobustParams::drop's drop points serve this action (it has not given up on them after
 // kMaxDropRetargets); else the paper's target and early stop.
 bool drop_points(const Context& c, const ActionState& a);
