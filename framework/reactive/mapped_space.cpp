@@ -308,15 +308,18 @@ void add_pockets(MappedSpace& m, const Dilated& d, double scale, double sliver) 
                                                          geometry::to_set(m.freespace.outer));
   for (const Region& r : pockets) {
     if (r.outer.area() <= sliver) continue;
-    // A boundary rounded from the exact Booleans against an inexact hull can touch itself away
-    // from its vertices (a vertex of F_k on its pocket's lid, a zero-area spike along it).
+    // A chained pocket is simple (its chain lies strictly on the inner side of its lid). A swept
+    // one, rounded from the exact Booleans against the inexact hull, can touch itself away from
+    // its vertices (a vertex of F_k on its lid, a zero-area spike along it): cut into its parts.
+    if (chained) {
+      add_pocket(m, d, r.outer, scale, false);
+      continue;
+    }
     const std::vector<Polygon> parts = geometry::simple_parts(r.outer, kFlatVertexDistance, sliver);
     const bool cut = parts.size() != 1 || parts.front().vertices != r.outer.vertices;
     for (const Polygon& part : parts) add_pocket(m, d, part, scale, cut);
   }
 }
-// A bug, not bad input: every pocket of the hull has an edge on it. Per trial (the sweep's
-// status `error`, `rearm run`'s exit 1), not `stuck` and not an abort of the whole sweep.
 
 MappedSpace build_full(const SemanticInput& in, double radius, const Point& robot,
                        DilationCache& cache, LoneFragments& lone) {
