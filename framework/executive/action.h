@@ -71,6 +71,7 @@ struct ActionState {
   GuideState guide;
   BackUpState back_up;
   DropState drop;
+  FragmentPlanState fragment_plan;
   BlockerState blockers;
   OnceState once;
   std::string name() const;

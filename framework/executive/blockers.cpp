@@ -7,6 +7,7 @@
 
 #include "core/stopwatch.h"
 #include "core/text.h"
+#include "geometry/dilation.h"
 #include "topology/topology_check.h"
 
 namespace rearm::executive {
@@ -68,8 +69,7 @@ std::optional<Advance> fix_mode_for(const Context& c, ActionState& a,
 }
 
 // fragment_blockers' check, whichever recovery asks for it.
-std::optional<Advance> closing_with_fragments(const Context& c, ActionState& a, double radius,
-                                              const Point& center) {
+std::vector<geometry::Polygon> fixed_with_fragments(const Context& c) {
   std::vector<geometry::Polygon> fixed = c.map.familiar();
   fixed.insert(fixed.end(), c.map.unknown().begin(), c.map.unknown().end());
   if (c.p.robust.memory) {
@@ -79,6 +79,31 @@ std::optional<Advance> closing_with_fragments(const Context& c, ActionState& a, 
       if (h.size() >= 3) fixed.push_back(h);
     }
   }
+  return fixed;
+}
+
+topology::TopologyInput input_with_fragments(const Context& c,
+                                             const std::vector<geometry::Disk>& objects,
+                                             double radius, const Point& x, const Point& target,
+                                             std::optional<std::size_t> carried) {
+  topology::TopologyInput in = topology::make_input(c.map.workspace(), c.map.familiar(), objects,
+                                                    radius, x, target, carried, c.topology_cache);
+  auto add = [&](const geometry::Polygon& h) {
+    in.fixed.push_back(
+        geometry::dilate_miter(h, radius + geometry::kContactSlack, miter_limit(c.p)));
+  };
+  for (const geometry::Polygon& h : c.map.unknown()) add(h);
+  if (c.p.robust.memory) {
+    for (const geometry::Polygon& h : c.map.seen()) {
+      if (h.size() >= 3) add(h);
+    }
+  }
+  return in;
+}
+
+std::optional<Advance> closing_with_fragments(const Context& c, ActionState& a, double radius,
+                                              const Point& center) {
+  const std::vector<geometry::Polygon> fixed = fixed_with_fragments(c);
   topology::TopologyResult res;
   try {
     const ScopedStopwatch sw(c.times.topology_s);

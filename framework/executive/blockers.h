@@ -31,6 +31,18 @@ std::optional<Narrowing> grown_blockers(const Context& c,
 // none is left.
 std::optional<Advance> fix_mode_for(const Context& c, ActionState& a,
                                     const std::vector<std::size_t>& blocking, std::string reason);
+// The fixed obstacles with the visible unknown fragments (and with RobustParams::memory what was
+// seen of them): the obstacles the topology check of Appendix III does not model, added.
+std::vector<geometry::Polygon> fixed_with_fragments(const Context& c);
+// The topology check's input (Appendix III) with the fixed_with_fragments obstacles: the familiar
+// dilations and the bound from the topology cache, the fragments dilated here as the mapped
+// space dilates them (miter_limit). check_topology(in) without the cache: bound − ∪fixed
+// changes as the fragments grow.
+// `objects`: the movable objects (the map's, or a hypothetical placement of them).
+topology::TopologyInput input_with_fragments(const Context& c,
+                                             const std::vector<geometry::Disk>& objects,
+                                             double radius, const Point& x, const Point& target,
+                                             std::optional<std::size_t> carried = std::nullopt);
 // The topology check again with the visible unknown fragments (and with RobustParams::memory
 // what was seen of them) as fixed obstacles: objects that close the way with them, or narrow
 // it (grown_blockers), go to Fix mode; counted in RecoveryCounts::fragment_fixes.

@@ -271,6 +271,14 @@ void Executive::enter_fix(const std::vector<std::string>& blocking, double t) {
   a->interruptions++;
   a->planned = false;
   a->built = false;
+  if (a->fix && a->interruptions > p_.max_fix_rounds) {
+    // A Fix-mode action is not counted in fix_rounds_; without this bound an object dropped
+    // back into the way it blocks is moved forever (measured: one object moved 1,500 times).
+    end_stuck("Fix mode entered " + std::to_string(p_.max_fix_rounds) +
+                  " times for this Fix-mode action without clearing the way",
+              t);
+    return;
+  }
   if (!a->fix) {
     ++fix_entries_;
     if (++fix_rounds_ > p_.max_fix_rounds) {

@@ -7,6 +7,7 @@
 
 #include "core/error.h"
 #include "core/stopwatch.h"
+#include "executive/blockers.h"
 #include "executive/interface_layer.h"
 #include "executive/release_pose.h"
 #include "executive/targets.h"
@@ -21,6 +22,23 @@ bool same_disks(const std::vector<geometry::Disk>& a, const std::vector<geometry
     if (a[i].center != b[i].center || a[i].radius != b[i].radius) return false;
   }
   return true;
+}
+
+// What the action's plan counts as fixed, for its messages.
+const char* fixed_obstacles(const ActionState& a) {
+  return a.fragment_plan.on ? "fixed obstacles and visible unknown obstacles" : "fixed obstacles";
+}
+
+// The topology check of the action's x* (Appendix III); a RELEASE the plan-among-fragments
+// unit sent on checks with the visible unknown fragments as fixed obstacles (without the topology
+// cache, which holds the familiar obstacles only).
+topology::TopologyResult check_target(const Context& c, const ActionState& a, double radius,
+                                      const Point& center, const Point& target) {
+  if (!a.fragment_plan.on) return timed_check(c, radius, center, target);
+  const topology::TopologyInput in =
+      input_with_fragments(c, c.map.movable(), radius, center, target);
+  const ScopedStopwatch sw(c.times.topology_s);
+  return topology::check_topology(in);
 }
 
 // GRASP's side (paper §IV): the first candidate whose pair centre lies in the pair's freespace
@@ -119,9 +137,9 @@ Advance plan_grasp(const Context& c, ActionState& a, const Pose& pose, Tick tick
   // Exact freespaces: the robot's (every object an obstacle) and the pair's once gripped (the
   // object carried, radius r + ρ_i + pair_margin).
   // F from the topology check with x* = x (throws when the robot is not in its freespace).
-  const topology::TopologyResult here = timed_check(c, rp, pose.x, pose.x);
+  const topology::TopologyResult here = check_target(c, a, rp, pose.x, pose.x);
   const geometry::Region* f = &here.freespace;
-  const geometry::RegionSet pair_free = pair_freespace(c, a.object);
+  const geometry::RegionSet pair_free = pair_freespace(c, a.object, a.fragment_plan.on);
   c.topology_checks += 1;
   const auto [reachable, fallback] = choose_side(c, a, candidates, pair_free, *f);
   if (fallback == nullptr) {
@@ -130,11 +148,11 @@ Advance plan_grasp(const Context& c, ActionState& a, const Pose& pose, Tick tick
   a.target = (reachable != nullptr ? reachable : fallback)->approach;
   if (reachable == nullptr) {
     // Paper §IV: the approach point is not in F; the topology check says why.
-    const topology::TopologyResult res = timed_check(c, r, pose.x, *a.target);
+    const topology::TopologyResult res = check_target(c, a, r, pose.x, *a.target);
     ++c.topology_checks;
     if (res.verdict == topology::Verdict::kBlockedByFixed) {
-      return closed("fixed obstacles separate the robot from every side of " + a.object + ": " +
-                    res.reason);
+      return closed(std::string(fixed_obstacles(a)) + " separate the robot from every side of " +
+                    a.object + ": " + res.reason);
     }
     if (res.verdict == topology::Verdict::kBlockedByObjects) {
       for (std::size_t i : res.blocking) {
@@ -224,7 +242,7 @@ Advance plan(const Context& c, ActionState& a, const Pose& pose, Tick tick) {
   if (a.kind == ActionKind::kDisassemble) return plan_disassemble(c, a, radius, center, rho);
 
   const Point target = region_target(region(c, a.region));
-  const topology::TopologyResult res = timed_check(c, radius, center, target);
+  const topology::TopologyResult res = check_target(c, a, radius, center, target);
   ++c.topology_checks;
   a.target = target;
   if (a.kind == ActionKind::kRelease && carried == a.object &&
@@ -247,10 +265,10 @@ Advance plan(const Context& c, ActionState& a, const Pose& pose, Tick tick) {
         return plan(c, a, pose, tick);
       }
       if (a.kind == ActionKind::kRelease && carried == a.object) {
-        return closed_by_objects(
-            c, a, pose, tick,
-            "fixed obstacles separate x* = " + point_text(target) + ": " + res.reason, radius,
-            center);
+        return closed_by_objects(c, a, pose, tick,
+                                 std::string(fixed_obstacles(a)) +
+                                     " separate x* = " + point_text(target) + ": " + res.reason,
+                                 radius, center);
       }
       out.kind = Advance::kInfeasible;
       out.reason = "fixed obstacles separate x* = " + point_text(target) + ": " + res.reason;
@@ -273,18 +291,24 @@ void remember_plan(const Context& c, ActionState& a) {
 
 // The exact freespace of the pair once `object` is gripped (the object carried, radius
 // r + contact margin + ρ_i + pair_margin): F_list of Appendix III.
-geometry::RegionSet pair_freespace(const Context& c, const std::string& object) {
+geometry::RegionSet pair_freespace(const Context& c, const std::string& object,
+                                   bool with_fragments) {
   const auto& ids = c.map.movable_ids();
   const auto it = std::find(ids.begin(), ids.end(), object);
   if (it == ids.end()) throw Error("executive: " + object + " is not a movable obstacle now");
   const std::size_t index = static_cast<std::size_t>(it - ids.begin());
   const Point at = c.map.movable()[index].center;
+  const double radius = plan_radius(c) + object_radius(c, object) + c.p.grasp.pair_margin;
   const ScopedStopwatch sw(c.times.topology_s);
   ++c.topology_checks;
+  if (with_fragments) {
+    topology::TopologyCache none;  // bound − ∪fixed changes as the fragments grow
+    return topology::freespace_components(
+        input_with_fragments(c, c.map.movable(), radius, at, at, index), none);
+  }
   return topology::freespace_components(
-      topology::make_input(c.map.workspace(), c.map.familiar(), c.map.movable(),
-                           plan_radius(c) + object_radius(c, object) + c.p.grasp.pair_margin, at,
-                           at, index, c.topology_cache),
+      topology::make_input(c.map.workspace(), c.map.familiar(), c.map.movable(), radius, at, at,
+                           index, c.topology_cache),
       c.topology_cache);
 }
 

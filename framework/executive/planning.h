@@ -26,7 +26,9 @@ void remember_plan(const Context& c, ActionState& a);
 // The release pose's parameters (release_pose.h) for the pair's dilation radius `radius`.
 ReleasePoseParams pose_params(const Context& c, double radius);
 // The exact freespace of the pair once `object` is gripped (the object carried, radius
-// r + contact margin + ρ_i + pair_margin): F_list of Appendix III.
-geometry::RegionSet pair_freespace(const Context& c, const std::string& object);
+// r + contact margin + ρ_i + pair_margin): F_list of Appendix III; with_fragments: the visible
+// unknown fragments counted as fixed obstacles (blockers.h, fixed_with_fragments).
+geometry::RegionSet pair_freespace(const Context& c, const std::string& object,
+                                   bool with_fragments = false);
 
 }  // namespace rearm::executive

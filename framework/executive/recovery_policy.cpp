@@ -23,6 +23,7 @@ constexpr UnitInfo kUnits[kUnitCount] = {
     {Unit::kRetarget, "retarget", &R::drop, ""},
     {Unit::kDropShort, "drop short", &R::early_release, "early_releases"},
     {Unit::kObjectBlockers, "object blockers", &R::object_blockers, "object_fixes"},
+    {Unit::kPlanAmongFragments, "plan among fragments", &R::fragments, ""},
 };
 
 constexpr units::UnitFunction* kFunctions[kUnitCount] = {
@@ -39,6 +40,7 @@ constexpr units::UnitFunction* kFunctions[kUnitCount] = {
     units::retarget,
     units::drop_short,
     units::object_blockers,
+    units::plan_among_fragments,
 };
 
 // The steps. Requirements are today's couplings (docs/executive.md): the contact back-up,
@@ -58,6 +60,7 @@ constexpr Step kRetarget{Unit::kRetarget};
 constexpr Step kDropShortAtGoal{Unit::kDropShort, {&R::drop}};
 constexpr Step kDropShort{Unit::kDropShort};
 constexpr Step kObjectBlockers{Unit::kObjectBlockers};
+constexpr Step kPlanAmongFragments{Unit::kPlanAmongFragments};
 
 constexpr Step kStalledMove[] = {kContactBackUp, kGuide, kNarrow};
 constexpr Step kStalledGrasp[] = {kEarlyDock, kContactBackUp, kGuide, kNarrow};
@@ -65,7 +68,8 @@ constexpr Step kStalledRelease[] = {kReleaseInRegion, kContactBackUp, kGuide, kN
 constexpr Step kStalledDisassemble[] = {kContactBackUp, kGuide, kRedrop, kNarrow};
 constexpr Step kCentreNotFree[] = {kBackUp};
 constexpr Step kNoLaw[] = {kConvex};
-constexpr Step kGoalCutOff[] = {kFragmentBlockers};
+constexpr Step kGoalCutOffMove[] = {kFragmentBlockers};
+constexpr Step kGoalCutOff[] = {kFragmentBlockers, kPlanAmongFragments};
 constexpr Step kGoalCutOffDisassemble[] = {kRetarget, kDropShortAtGoal};
 constexpr Step kClosedByMemory[] = {kMemoryBlockers};
 constexpr Step kBackUpsSpentDisassemble[] = {kDropShort};
@@ -76,7 +80,7 @@ constexpr std::span<const Step> kTable[kCauseCount][4] = {
     {kStalledMove, kStalledGrasp, kStalledRelease, kStalledDisassemble},
     {kCentreNotFree, kCentreNotFree, kCentreNotFree, kCentreNotFree},
     {kNoLaw, kNoLaw, kNoLaw, kNoLaw},
-    {kGoalCutOff, kGoalCutOff, kGoalCutOff, kGoalCutOffDisassemble},
+    {kGoalCutOffMove, kGoalCutOff, kGoalCutOff, kGoalCutOffDisassemble},
     {kClosedByMemory, kClosedByMemory, kClosedByMemory, {}},
     {{}, {}, {}, kBackUpsSpentDisassemble},
     {{}, kClosedByObjects, kClosedByObjects, {}},

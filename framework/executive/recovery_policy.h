@@ -29,8 +29,9 @@ enum class Unit {
   kRetarget,
   kDropShort,
   kObjectBlockers,
+  kPlanAmongFragments,
 };
-inline constexpr std::size_t kUnitCount = 13;
+inline constexpr std::size_t kUnitCount = 14;
 
 using Switch = bool RobustParams::*;
 

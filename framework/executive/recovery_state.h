@@ -94,6 +94,15 @@ struct DropState {
   std::size_t level = 0;
 };
 
+// The plan-among-fragments unit (recovery_plan_among_fragments.cpp): a visible unknown fragment
+// took a GRASP's or RELEASE's x*; from then on the action plans with the fragments as fixed
+// obstacles (planning.cpp), asked at most kMaxFragmentRetargets times.
+inline constexpr int kMaxFragmentRetargets = 4;
+struct FragmentPlanState {
+  bool on = false;
+  int retargets = 0;
+};
+
 // The object-blockers unit (recovery_object_blockers.cpp): Fix-mode entries it asked for in
 // this action, at most kMaxObjectFixes.
 struct BlockerState {

@@ -33,5 +33,6 @@ UnitFunction memory_blockers;
 UnitFunction retarget;
 UnitFunction drop_short;
 UnitFunction object_blockers;
+UnitFunction plan_among_fragments;
 
 }  // namespace rearm::executive::units

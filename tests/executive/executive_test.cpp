@@ -16,6 +16,7 @@
 #include "core/error.h"
 #include "executive/kinematic_plant.h"
 #include "executive/task_runner.h"
+#include "geometry/distance.h"
 #include "ltl/parser.h"
 #include "support/task_scenes.h"
 
@@ -296,6 +297,63 @@ TEST(Executive, TargetUnderAnUnknownObstacleIsInfeasible) {
   ASSERT_FALSE(r.actions.empty());
   EXPECT_NE(r.actions[0].reason.find("unknown obstacles"), std::string::npos)
       << r.actions[0].reason;
+  EXPECT_EQ(r.collisions, 0);
+}
+
+// l4 is 3 m by 2.5 m; an unknown obstacle covers its centroid (the paper's RELEASE target,
+// §IV), which the topology check (familiar obstacles and objects, Appendix III) passes.
+TaskSpec release_beside_unknown(const Polygon& unknown) {
+  TaskSpec t = open_room("<>(grasp(M1) && <>release(M1,l4))");
+  t.regions.push_back({"l4", rect(6.5, 3, 9.5, 5.5)});
+  t.world.unknown = {{"C1", unknown}};
+  return t;
+}
+
+const ActionRecord* find_action(const TaskResult& r, const std::string& name) {
+  for (const ActionRecord& a : r.actions) {
+    if (a.action == name) return &a;
+  }
+  return nullptr;
+}
+
+TEST(Executive, AReleaseWhoseCentroidAnUnknownObstacleTakesSetsTheObjectDownBesideIt) {
+  // RELEASE(M1, l4) holds wherever in l4 the object lies (§II-B): the robust variant plans again
+  // with the visible fragment as a fixed obstacle and sets M1 down in l4 beside it.
+  const Polygon c1 = rect(7.6, 3.9, 8.4, 4.6);
+  const TaskSpec t = release_beside_unknown(c1);
+  KinematicPlant plant(t.world, 0.2, kStart);
+  const TaskResult r = run_task(t, plant);
+  ASSERT_EQ(r.status, TaskStatus::kCompleted) << r.reason;
+  const Point m = plant.object_center(0);
+  EXPECT_TRUE(inside(t, "l4", m)) << m.transpose();
+  // Ground truth: the object's disk clear of the unknown obstacle it was set down beside.
+  EXPECT_GE(geometry::signed_distance(c1, m), 0.25) << m.transpose();
+  EXPECT_GE(r.recoveries.release_points, 1);
+  EXPECT_EQ(r.collisions, 0);
+
+  // Without the fragments switch (as in the paper) the same RELEASE is infeasible.
+  TaskSpec off = t;
+  off.executive.robust.fragments = false;
+  KinematicPlant plant_off(off.world, 0.2, kStart);
+  const TaskResult r_off = run_task(off, plant_off);
+  EXPECT_EQ(r_off.status, TaskStatus::kInfeasible) << r_off.reason;
+  const ActionRecord* release = find_action(r_off, "release(M1,l4)");
+  ASSERT_NE(release, nullptr);
+  EXPECT_EQ(release->outcome, ActionOutcome::kInfeasible);
+  EXPECT_NE(release->reason.find("unknown obstacles"), std::string::npos) << release->reason;
+}
+
+TEST(Executive, AReleaseIntoARegionAnUnknownObstacleCoversIsInfeasible) {
+  // The obstacle covers all of l4 but a strip narrower than the object: no point of l4 is left,
+  // and only then is the RELEASE infeasible.
+  const TaskSpec t = release_beside_unknown(rect(6.4, 2.9, 9.6, 5.3));
+  KinematicPlant plant(t.world, 0.2, kStart);
+  const TaskResult r = run_task(t, plant);
+  EXPECT_EQ(r.status, TaskStatus::kInfeasible) << r.reason;
+  const ActionRecord* release = find_action(r, "release(M1,l4)");
+  ASSERT_NE(release, nullptr);
+  EXPECT_EQ(release->outcome, ActionOutcome::kInfeasible);
+  EXPECT_NE(release->reason.find("unknown obstacles"), std::string::npos) << release->reason;
   EXPECT_EQ(r.collisions, 0);
 }
 
