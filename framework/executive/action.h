@@ -28,6 +28,23 @@ using reactive::Twist;
 enum class ActionKind { kMove, kGrasp, kRelease, kDisassemble };
 enum class ActionPhase { kNavigate, kAlign, kDock, kGrip, kWithdraw, kOpen, kBackOff };
 
+// A way the topology check found closed by objects (Appendix III): from the centre `from` to x*
+// `to`, for a disk of `radius`.
+// `fragments`: the check counted the visible unknown fragments as fixed obstacles
+// (recovery_plan_among_fragments.cpp). `movers`: the objects Fix mode moves to open it, as they
+// lay when it was entered, and their ids; `path`: from `from` to `to` with the movers removed
+// (targets.h, way_path), empty when none was found.
+struct Way {
+  Point from = Point::Zero();
+  Point to = Point::Zero();
+  double radius = 0;
+  bool fragments = false;
+  std::vector<geometry::Disk> movers;
+  std::vector<std::string> mover_ids;
+  std::vector<Point> path;
+  int checks = 0;  // drop candidates checked exactly against it (targets.cpp, kMaxWayChecks)
+};
+
 struct ActionState {
   ActionKind kind = ActionKind::kMove;
   std::string object;
@@ -49,6 +66,7 @@ struct ActionState {
   double withdrawn = 0;      // Phase::kWithdraw: m reversed so far
   double withdraw_goal = 0;  // Phase::kWithdraw: m to reverse (withdraw_distance)
   bool bare = false;         // planned at the bare radius r: the contact margin alone closed x*
+  std::optional<Way> blocked_way;  // the way the last plan found closed by objects (Fix mode's)
   // RELEASE, RobustParams::release_pose: the pose it sets the object down from, and whether the
   // straight last stretch (lead-in to x*) has begun.
   std::optional<ReleasePose> pose;

@@ -8,6 +8,7 @@
 #include "core/stopwatch.h"
 #include "core/text.h"
 #include "geometry/dilation.h"
+#include "geometry/distance.h"
 #include "topology/topology_check.h"
 
 namespace rearm::executive {
@@ -68,6 +69,54 @@ std::optional<Advance> fix_mode_for(const Context& c, ActionState& a,
   return out;
 }
 
+// Appendix III's B_M holds every object of each cluster that separates x from x*; where the
+// objects crowd, one cluster holds most of them. Cut down: the objects whose removal leaves x*
+// reachable, dropped one at a time while x* stays reachable without the rest, farthest from the
+// segment x–x* first, so that the objects kept for Fix mode are those on the way.
+std::vector<std::size_t> minimal_blockers(const Context& c,
+                                          const std::vector<std::size_t>& blocking, double radius,
+                                          const Point& center, const Point& target) {
+  if (blocking.size() < 2) return blocking;
+  const std::vector<geometry::Disk>& all = c.map.movable();
+  auto reachable_without = [&](const std::vector<std::size_t>& removed) {
+    std::vector<geometry::Disk> kept;
+    for (std::size_t i = 0; i < all.size(); ++i) {
+      if (std::find(removed.begin(), removed.end(), i) == removed.end()) kept.push_back(all[i]);
+    }
+    const ScopedStopwatch sw(c.times.topology_s);
+    ++c.topology_checks;
+    try {
+      return topology::check_topology(
+                 topology::make_input(c.map.workspace(), c.map.familiar(), kept, radius, center,
+                                      target, std::nullopt, c.topology_cache),
+                 c.topology_cache)
+                 .verdict == topology::Verdict::kReachable;
+    } catch (const topology::CenterNotFree&) {
+      return false;
+    }
+  };
+  std::vector<std::size_t> moved = blocking;
+  if (!reachable_without(moved)) return blocking;
+  std::vector<std::size_t> order = blocking;
+  auto off_way = [&](std::size_t i) {
+    return (geometry::nearest_on_segment(center, target, all[i].center) - all[i].center).norm();
+  };
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t i, std::size_t j) { return off_way(i) > off_way(j); });
+  for (std::size_t i : order) {
+    std::vector<std::size_t> fewer;
+    for (std::size_t k : moved) {
+      if (k != i) fewer.push_back(k);
+    }
+    if (!fewer.empty() && reachable_without(fewer)) moved = std::move(fewer);
+  }
+  std::vector<std::size_t> out;
+  for (std::size_t i : blocking) {
+    if (std::find(moved.begin(), moved.end(), i) != moved.end()) out.push_back(i);
+  }
+  return out;
+}
+
 // fragment_blockers' check, whichever recovery asks for it.
 std::vector<geometry::Polygon> fixed_with_fragments(const Context& c) {
   std::vector<geometry::Polygon> fixed = c.map.familiar();
@@ -114,6 +163,8 @@ std::optional<Advance> closing_with_fragments(const Context& c, ActionState& a, 
     return std::nullopt;
   }
   std::optional<Advance> out;
+  a.blocked_way =
+      Way{center, *a.target, radius, true, {}, {}, {}, 0};  // Fix mode's drop points keep it open
   if (res.verdict == topology::Verdict::kBlockedByObjects) {
     out = fix_mode_for(
         c, a, res.blocking,

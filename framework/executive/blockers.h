@@ -31,6 +31,12 @@ std::optional<Narrowing> grown_blockers(const Context& c,
 // none is left.
 std::optional<Advance> fix_mode_for(const Context& c, ActionState& a,
                                     const std::vector<std::size_t>& blocking, std::string reason);
+// B_M (indices into the map's movable objects, as the topology check names them) cut down to a
+// minimal subset whose removal leaves x* reachable from the centre, trying the objects farthest
+// from the segment centre–x* first; B_M itself when removing all of it does not.
+std::vector<std::size_t> minimal_blockers(const Context& c,
+                                          const std::vector<std::size_t>& blocking, double radius,
+                                          const Point& center, const Point& target);
 // The fixed obstacles with the visible unknown fragments (and with RobustParams::memory what was
 // seen of them): the obstacles the topology check of Appendix III does not model, added.
 std::vector<geometry::Polygon> fixed_with_fragments(const Context& c);

@@ -38,6 +38,10 @@ struct Context {
   // the grasp side or release pose the current LTL action sent objects to Fix mode for; Fix
   // mode's drop points keep their pair disks out of them. Emptied when an LTL action starts.
   std::vector<geometry::Disk>& keep_clear;
+  // RobustParams::drop: the ways Fix mode was entered to open for the current LTL action (the
+  // interrupted actions' blocked ways); Fix mode's drop points keep them open (targets.cpp).
+  // Emptied when an LTL action starts.
+  std::vector<Way>& fix_ways;
 };
 
 // "(x, y)" with millimetres, for reasons and notes.

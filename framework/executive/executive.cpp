@@ -1,5 +1,6 @@
 #include "executive/executive.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <utility>
@@ -9,6 +10,7 @@
 #include "core/text.h"
 #include "executive/navigate.h"
 #include "executive/phases.h"
+#include "executive/targets.h"
 #include "reactive/local_freespace.h"
 
 namespace rearm::executive {
@@ -60,7 +62,7 @@ Executive::Executive(const ExecutiveParams& params, const std::vector<RegionOfIn
       ctx_{p_,          regions_,        map_,
            controller_, topology_cache_, drop_dilations_,
            times_,      recoveries_,     topology_checks_,
-           last_u_,     keep_clear_} {
+           last_u_,     keep_clear_,     fix_ways_} {
   validate(p_);
   controller_.set_convex_fallback(p_.robust.convex_fallback);
   controller_.set_miter_limit(miter_limit(p_));
@@ -112,6 +114,7 @@ bool Executive::fetch_ltl(double t) {
           // moved is released into its region again, as an interface-layer action.
           ++recoveries_.restores;
           keep_clear_.clear();
+          fix_ways_.clear();
           fix_.push_back(
               make_action(ActionKind::kRelease, r->first, r->second, true, t, p_.progress));
           return true;
@@ -138,6 +141,7 @@ bool Executive::fetch_ltl(double t) {
   ltl_->ltl = *next;
   fix_rounds_ = 0;
   keep_clear_.clear();
+  fix_ways_.clear();
   // Unknown names fail here, with the name, rather than deep inside a phase.
   if (!ltl_->region.empty()) region(ctx_, ltl_->region);
   if (!ltl_->object.empty()) object_radius(ctx_, ltl_->object);
@@ -289,6 +293,19 @@ void Executive::enter_fix(const std::vector<std::string>& blocking, double t) {
       return;
     }
   }
+  if (a->blocked_way && p_.robust.drop) {
+    Way way = *a->blocked_way;
+    for (const std::string& id : blocking) {
+      const auto& ids = map_.movable_ids();
+      const auto it = std::find(ids.begin(), ids.end(), id);
+      if (it == ids.end()) continue;
+      way.movers.push_back(map_.movable()[it - ids.begin()]);
+      way.mover_ids.push_back(id);
+    }
+    way.path = way_path(ctx_, way);
+    fix_ways_.push_back(std::move(way));
+  }
+  a->blocked_way.reset();
   std::vector<ActionState> exec;  // execution order
   const std::optional<std::string> carried = map_.carried();
   if (carried)

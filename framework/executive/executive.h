@@ -163,6 +163,7 @@ class Executive {
   bool law_command_ = false;  // the last step's command came from the reactive law
   Twist last_u_;              // the last step's command (open() lets go only after a stop)
   std::vector<geometry::Disk> keep_clear_;  // Context::keep_clear
+  std::vector<Way> fix_ways_;               // Context::fix_ways
   ComputeTimes times_;
   RecoveryCounts recoveries_;
   Restores restores_;

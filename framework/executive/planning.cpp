@@ -41,6 +41,15 @@ topology::TopologyResult check_target(const Context& c, const ActionState& a, do
   return topology::check_topology(in);
 }
 
+// B_M of a verdict kBlockedByObjects; RobustParams::object_blockers: a minimal subset of it
+// (blockers.h, minimal_blockers).
+std::vector<std::size_t> blockers(const Context& c, const ActionState& a,
+                                  const topology::TopologyResult& res, double radius,
+                                  const Point& center, const Point& target) {
+  if (!c.p.robust.object_blockers || a.fragment_plan.on) return res.blocking;
+  return minimal_blockers(c, res.blocking, radius, center, target);
+}
+
 // GRASP's side (paper §IV): the first candidate whose pair centre lies in the pair's freespace
 // and whose approach point lies in F (reachable), and the first with the pair free alone
 // (fallback, for the topology check). Robust variant (RobustParams::fragments): sides whose
@@ -155,7 +164,7 @@ Advance plan_grasp(const Context& c, ActionState& a, const Pose& pose, Tick tick
                     a.object + ": " + res.reason);
     }
     if (res.verdict == topology::Verdict::kBlockedByObjects) {
-      for (std::size_t i : res.blocking) {
+      for (std::size_t i : blockers(c, a, res, r, pose.x, *a.target)) {
         if (ids[i] != a.object) out.blocking.push_back(ids[i]);
       }
       if (out.blocking.empty()) {
@@ -163,6 +172,7 @@ Advance plan_grasp(const Context& c, ActionState& a, const Pose& pose, Tick tick
       }
       out.kind = Advance::kBlocked;
       out.reason = res.reason;
+      a.blocked_way = Way{pose.x, *a.target, r, a.fragment_plan.on, {}, {}, {}, 0};
       return out;
     }
   }
@@ -275,7 +285,10 @@ Advance plan(const Context& c, ActionState& a, const Pose& pose, Tick tick) {
       return out;
     case topology::Verdict::kBlockedByObjects:
       out.kind = Advance::kBlocked;
-      for (std::size_t i : res.blocking) out.blocking.push_back(c.map.movable_ids()[i]);
+      a.blocked_way = Way{center, target, radius, a.fragment_plan.on, {}, {}, {}, 0};
+      for (std::size_t i : blockers(c, a, res, radius, center, target)) {
+        out.blocking.push_back(c.map.movable_ids()[i]);
+      }
       out.reason = res.reason;
       return out;
   }

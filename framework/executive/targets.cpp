@@ -1,12 +1,18 @@
 #include "executive/targets.h"
 
+#include <algorithm>
 #include <array>
+#include <limits>
 #include <string>
+#include <vector>
 
 #include "core/stopwatch.h"
+#include "executive/blockers.h"
 #include "executive/guide_path.h"
 #include "executive/interface_layer.h"
+#include "geometry/distance.h"
 #include "reactive/mapped_space.h"
+#include "topology/topology_check.h"
 
 namespace rearm::executive {
 
@@ -38,6 +44,91 @@ bool drop_kept(const Context& c, const ActionState& a, const Point& q, double rh
   if (a.drop.level >= kDropLevels.size()) return true;
   return known_clearance(c.map, q, *carried) >=
          kDropLevels[a.drop.level] * (c.p.robot_radius + max_object_radius(c));
+}
+
+namespace {
+
+// The movable objects but the way's movers that still lie where they lay (not yet moved).
+std::vector<geometry::Disk> left_in_place(const Context& c, const Way& w) {
+  std::vector<geometry::Disk> objects;
+  for (const geometry::Disk& d : c.map.movable()) {
+    const bool mover = std::any_of(w.movers.begin(), w.movers.end(), [&](const auto& m) {
+      return m.center == d.center && m.radius == d.radius;
+    });
+    if (!mover) objects.push_back(d);
+  }
+  return objects;
+}
+
+// Appendix III's check of the way with `objects` (with_fragments: the fragments as fixed
+// obstacles too, uncached); throws topology::CenterNotFree.
+topology::TopologyResult way_check(const Context& c, const Way& w,
+                                   const std::vector<geometry::Disk>& objects,
+                                   bool with_fragments) {
+  const ScopedStopwatch sw(c.times.topology_s);
+  ++c.topology_checks;
+  if (with_fragments) {
+    return topology::check_topology(input_with_fragments(c, objects, w.radius, w.from, w.to));
+  }
+  return topology::check_topology(
+      topology::make_input(c.map.workspace(), c.map.familiar(), objects, w.radius, w.from, w.to,
+                           std::nullopt, c.topology_cache),
+      c.topology_cache);
+}
+
+// Fix mode's ways (Context::fix_ways) stay open with the carried object at the drop point q: a
+// candidate whose object reach (r + dock gap + ρ) comes within twice that plus the way's radius
+// of the way's path is checked exactly (Appendix III's check with the object's disk at q, the
+// way's movers not yet moved left out): rejected when the disk joins the objects that close the
+// way. At most kMaxWayChecks exact checks per way (over all the searches of its Fix-mode
+// entry); past them, the path's neighbourhood alone decides (rejected within reach + radius).
+bool keeps_way_open(const Context& c, Way& w, const Point& q, double reach) {
+  double off = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 1; k < w.path.size(); ++k) {
+    off = std::min(off, (geometry::nearest_on_segment(w.path[k - 1], w.path[k], q) - q).norm());
+  }
+  if (off >= 2 * (reach + w.radius)) return true;
+  if (w.checks >= kMaxWayChecks) return off >= reach + w.radius;
+  ++w.checks;
+  std::vector<geometry::Disk> objects = left_in_place(c, w);
+  objects.push_back(geometry::Disk{q, reach});
+  try {
+    const topology::TopologyResult res = way_check(c, w, objects, false);
+    return !(res.verdict == topology::Verdict::kBlockedByObjects &&
+             std::find(res.blocking.begin(), res.blocking.end(), objects.size() - 1) !=
+                 res.blocking.end());
+  } catch (const topology::CenterNotFree&) {
+    return false;  // the disk covers where the way starts
+  }
+}
+
+// Only a mover keeps off its way: the interrupted action's own object, set down so that Fix mode
+// can move the others, is gripped again right after them (measured: kept off the way too, it was
+// carried 1,000 s to a far drop point on a corpus instance).
+bool keeps_ways_open(const Context& c, const std::string& carried, const Point& q, double rho) {
+  const double reach = c.p.robot_radius + c.p.grasp.dock_gap + rho;
+  for (Way& w : c.fix_ways) {
+    if (std::find(w.mover_ids.begin(), w.mover_ids.end(), carried) == w.mover_ids.end()) continue;
+    if (!keeps_way_open(c, w, q, reach)) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+std::vector<Point> way_path(const Context& c, const Way& w) {
+  topology::TopologyResult res;
+  try {
+    res = way_check(c, w, left_in_place(c, w), w.fragments);
+  } catch (const topology::CenterNotFree&) {
+    return {};
+  }
+  if (res.verdict != topology::Verdict::kReachable) return {};
+  const std::optional<std::vector<Point>> path = guide_path(res.freespace, w.from, w.to, c.p.guide);
+  if (!path) return {};
+  std::vector<Point> out{w.from};
+  out.insert(out.end(), path->begin(), path->end());
+  return out;
 }
 
 // The robust variant's drop point: searched in the pair's mapped freespace F_k (the visible
@@ -77,7 +168,8 @@ std::optional<Point> drop_point(const Context& c, ActionState& a, const geometry
       if ((q - k.center).norm() < k.radius + radius) return false;
     }
     return clear_of_regions(q, c.p.robot_radius + rho + kDropSlack, c.regions) &&
-           (k == need.size() || known_clearance(c.map, q, carried) >= need[k]);
+           (k == need.size() || known_clearance(c.map, q, carried) >= need[k]) &&
+           keeps_ways_open(c, carried, q, rho);
   };
   const auto q = nearest_clear_point(where, center, raster_need, accept, c.p.guide, true);
   a.drop.level = q ? q->level : kDropLevels.size();  // none: the paper's target, kept as is

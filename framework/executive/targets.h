@@ -15,6 +15,17 @@ namespace rearm::executive {
 // many times r + max ρ away: a fragment that took it likely covers its surroundings too.
 inline constexpr double kRejectedDropRadius = 2;
 
+// Exact checks of drop-point candidates against each of Fix mode's ways (Context::fix_ways),
+// over all the searches of its Fix-mode entry.
+inline constexpr int kMaxWayChecks = 100;
+
+// The path of a way Fix mode is entered to open (Context::fix_ways): the topology check with
+// the way's movers removed (the fragments too for a way found closed among them), and a guide
+// path (guide_path.h) from `from` to `to` in the freespace it gives, `from` first; empty when
+// x* is not reachable so or the raster finds no path. RobustParams::drop's drop points near it
+// are checked against the way (targets.cpp, keeps_way_open).
+std::vector<Point> way_path(const Context& c, const Way& w);
+
 // RobustParams::drop's drop points serve this action (it has not given up on them after
 // kMaxDropRetargets); else the paper's target and early stop.
 bool drop_points(const Context& c, const ActionState& a);

@@ -357,6 +357,47 @@ TEST(Executive, AReleaseIntoARegionAnUnknownObstacleCoversIsInfeasible) {
   EXPECT_EQ(r.collisions, 0);
 }
 
+// A wall across the room with a 2.8 m door that three objects, 0.8 m apart, close together
+// (0.3 m between them, 0.35 m beside them: the robot is 0.4 m wide; their dilations overlap,
+// one cluster: Appendix III's B_M). Each can be gripped where it lies, and any one of them moved
+// leaves a gap of at least 0.95 m: by construction, one object is enough.
+TaskSpec door_closed_by_three() {
+  TaskSpec t;
+  t.world.workspace = rect(0, 0, 10, 6);
+  t.world.familiar = {{"W1", rect(4.9, 0.05, 5.1, 1.6)}, {"W2", rect(4.9, 4.4, 5.1, 5.95)}};
+  t.world.movable = {{"M1", geometry::Disk{Point(5, 2.2), 0.25}},
+                     {"M2", geometry::Disk{Point(5, 3.0), 0.25}},
+                     {"M3", geometry::Disk{Point(5, 3.8), 0.25}}};
+  t.regions = {{"l1", rect(7.5, 2.5, 8.5, 3.5)}};
+  t.formula = ltl::parse("<>move(l1)");
+  return t;
+}
+
+int fix_mode_grasps(const TaskResult& r) {
+  return static_cast<int>(std::count_if(r.actions.begin(), r.actions.end(), [](const auto& a) {
+    return a.fix && a.action.rfind("grasp(", 0) == 0 && a.outcome == ActionOutcome::kSucceeded;
+  }));
+}
+
+TEST(Executive, FixModeMovesAMinimalSubsetOfABlockingCluster) {
+  const Pose start{Point(2, 3), 0};
+  TaskSpec t = door_closed_by_three();
+  KinematicPlant plant(t.world, 0.2, start);
+  const TaskResult r = run_task(t, plant);
+  ASSERT_EQ(r.status, TaskStatus::kCompleted) << r.reason;
+  EXPECT_TRUE(inside(t, "l1", plant.pose().x));
+  EXPECT_EQ(fix_mode_grasps(r), 1);
+  EXPECT_EQ(r.collisions, 0);
+
+  // Without object_blockers, B_M is the whole cluster, as in the paper.
+  t.executive.robust.object_blockers = false;
+  KinematicPlant plant_all(t.world, 0.2, start);
+  const TaskResult all = run_task(t, plant_all);
+  ASSERT_EQ(all.status, TaskStatus::kCompleted) << all.reason;
+  EXPECT_EQ(fix_mode_grasps(all), 3);
+  EXPECT_EQ(all.collisions, 0);
+}
+
 TEST(Executive, RunsAreDeterministic) {
   const TaskSpec t = test_support::fig3_task();
   KinematicPlant a(t.world, 0.2, test_support::fig3_start());
