@@ -118,16 +118,27 @@ std::vector<std::size_t> minimal_blockers(const Context& c,
 }
 
 // fragment_blockers' check, whichever recovery asks for it.
-std::vector<geometry::Polygon> fixed_with_fragments(const Context& c) {
-  std::vector<geometry::Polygon> fixed = c.map.familiar();
-  fixed.insert(fixed.end(), c.map.unknown().begin(), c.map.unknown().end());
+namespace {
+
+// The visible unknown fragments, and with RobustParams::memory what has been seen of each unknown
+// obstacle (a convex subset of it): the way the guide found closed may run past obstacles out of
+// sight now.
+std::vector<geometry::Polygon> fragments(const Context& c) {
+  std::vector<geometry::Polygon> out = c.map.unknown();
   if (c.p.robust.memory) {
-    // What has been seen of each unknown obstacle (a convex subset of it): the way the guide
-    // found closed may run past obstacles out of sight now.
     for (const geometry::Polygon& h : c.map.seen()) {
-      if (h.size() >= 3) fixed.push_back(h);
+      if (h.size() >= 3) out.push_back(h);
     }
   }
+  return out;
+}
+
+}  // namespace
+
+std::vector<geometry::Polygon> fixed_with_fragments(const Context& c) {
+  std::vector<geometry::Polygon> fixed = c.map.familiar();
+  const std::vector<geometry::Polygon> seen = fragments(c);
+  fixed.insert(fixed.end(), seen.begin(), seen.end());
   return fixed;
 }
 
@@ -137,15 +148,9 @@ topology::TopologyInput input_with_fragments(const Context& c,
                                              std::optional<std::size_t> carried) {
   topology::TopologyInput in = topology::make_input(c.map.workspace(), c.map.familiar(), objects,
                                                     radius, x, target, carried, c.topology_cache);
-  auto add = [&](const geometry::Polygon& h) {
+  for (const geometry::Polygon& h : fragments(c)) {
     in.fixed.push_back(
         geometry::dilate_miter(h, radius + geometry::kContactSlack, miter_limit(c.p)));
-  };
-  for (const geometry::Polygon& h : c.map.unknown()) add(h);
-  if (c.p.robust.memory) {
-    for (const geometry::Polygon& h : c.map.seen()) {
-      if (h.size() >= 3) add(h);
-    }
   }
   return in;
 }

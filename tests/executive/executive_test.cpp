@@ -316,6 +316,14 @@ const ActionRecord* find_action(const TaskResult& r, const std::string& name) {
   return nullptr;
 }
 
+// RELEASE(M1, l4) ended infeasible, naming the unknown obstacles.
+void expect_release_infeasible(const TaskResult& r) {
+  const ActionRecord* release = find_action(r, "release(M1,l4)");
+  ASSERT_NE(release, nullptr);
+  EXPECT_EQ(release->outcome, ActionOutcome::kInfeasible);
+  EXPECT_NE(release->reason.find("unknown obstacles"), std::string::npos) << release->reason;
+}
+
 TEST(Executive, AReleaseWhoseCentroidAnUnknownObstacleTakesSetsTheObjectDownBesideIt) {
   // RELEASE(M1, l4) holds wherever in l4 the object lies (§II-B): the robust variant plans again
   // with the visible fragment as a fixed obstacle and sets M1 down in l4 beside it.
@@ -337,10 +345,7 @@ TEST(Executive, AReleaseWhoseCentroidAnUnknownObstacleTakesSetsTheObjectDownBesi
   KinematicPlant plant_off(off.world, 0.2, kStart);
   const TaskResult r_off = run_task(off, plant_off);
   EXPECT_EQ(r_off.status, TaskStatus::kInfeasible) << r_off.reason;
-  const ActionRecord* release = find_action(r_off, "release(M1,l4)");
-  ASSERT_NE(release, nullptr);
-  EXPECT_EQ(release->outcome, ActionOutcome::kInfeasible);
-  EXPECT_NE(release->reason.find("unknown obstacles"), std::string::npos) << release->reason;
+  expect_release_infeasible(r_off);
 }
 
 TEST(Executive, AReleaseIntoARegionAnUnknownObstacleCoversIsInfeasible) {
@@ -350,10 +355,7 @@ TEST(Executive, AReleaseIntoARegionAnUnknownObstacleCoversIsInfeasible) {
   KinematicPlant plant(t.world, 0.2, kStart);
   const TaskResult r = run_task(t, plant);
   EXPECT_EQ(r.status, TaskStatus::kInfeasible) << r.reason;
-  const ActionRecord* release = find_action(r, "release(M1,l4)");
-  ASSERT_NE(release, nullptr);
-  EXPECT_EQ(release->outcome, ActionOutcome::kInfeasible);
-  EXPECT_NE(release->reason.find("unknown obstacles"), std::string::npos) << release->reason;
+  expect_release_infeasible(r);
   EXPECT_EQ(r.collisions, 0);
 }
 
