@@ -174,12 +174,27 @@ Polygon clip_to_workspace(const Polygon& convex, double width, double height) {
   return p;
 }
 
+// A required placement (a point, the robot start, the pocket) found no site.
+class PlacementFailure : public Error {
+ public:
+  using Error::Error;
+};
+
+// The rules a Generator keeps (random_instance.h, "Crowded fallback").
+enum class Rules { kStandard, kCrowded };
+
+// Crowded fallback: lattice pitch d·(1 + kLatticeStretch), so that neighbouring sites keep the
+// spacing d despite rounding (with pitch d a rounded difference can fall just below d and
+// reject the neighbour).
+constexpr double kLatticeStretch = 1e-9;
+
 class Generator {
  public:
-  Generator(const InstanceSpec& spec, int redraw)
+  Generator(const InstanceSpec& spec, int redraw, Rules rules)
       : spec_(spec),
         l_(layout(spec)),
         redraw_(redraw),
+        rules_(rules),
         raster_(l_.width, l_.height, l_.pair, kRasterCell, kMaxRasterCells),
         coverage_(l_.width, l_.height, raster_.cell_side()) {}
 
@@ -203,10 +218,11 @@ class Generator {
   }
 
   [[noreturn]] void placement_failed(const std::string& what, const std::string& rule) const {
-    throw Error(describe(spec_) + ": could not place " + what + " in " +
-                std::to_string(spec_.max_attempts) + " attempts (" + rule +
-                "); use a larger workspace, fewer objects, a smaller footprint_density or a "
-                "smaller region_side");
+    throw PlacementFailure(
+        describe(spec_) + ": could not place " + what + " in " +
+        std::to_string(spec_.max_attempts) + " attempts (" + rule +
+        "); use a larger workspace, fewer objects, a smaller footprint_density or a "
+        "smaller region_side");
   }
 
   // Uniform in the inset workspace [m, width - m] x [m, height - m].
@@ -236,14 +252,16 @@ class Generator {
 
   bool point_ok(const Point& p, const std::vector<Point>& out,
                 const std::vector<Point>& also) const {
-    return spaced_from(p, out) && spaced_from(p, also) && clear_of_pocket(p, l_.point_pocket);
+    return spaced_from(p, out) && spaced_from(p, also) &&
+           clear_of_pocket(p, crowded() ? l_.point_obstacle : l_.point_pocket);
   }
 
   // Dense fallback: the sites of a square lattice of pitch d over the inset workspace that keep
   // the rules, in random order (Fisher–Yates with rng.index), as many as needed.
   void lattice_points(Rng& rng, int n, std::vector<Point>& out,
                       const std::vector<Point>& also) const {
-    const double m = l_.point_boundary, d = l_.spacing;
+    const double m = l_.point_boundary;
+    const double d = crowded() ? l_.spacing * (1 + kLatticeStretch) : l_.spacing;
     const int cols = static_cast<int>(std::floor((l_.width - 2 * m) / d)) + 1;
     const int rows = static_cast<int>(std::floor((l_.height - 2 * m) / d)) + 1;
     const Point offset((l_.width - (cols - 1) * d) / 2, (l_.height - (rows - 1) * d) / 2);
@@ -336,9 +354,10 @@ class Generator {
       const bool clear_of_objects =
           std::all_of(starts_.begin(), starts_.end(),
                       [&](const Point& q) { return (p - q).norm() >= l_.robot_object; });
-      const bool clear_of_regions = std::all_of(goals_.begin(), goals_.end(), [&](const Point& g) {
-        return square_distance(g, l_.region_side, p) >= spec_.robot_radius;
-      });
+      const bool clear_of_regions =
+          crowded() || std::all_of(goals_.begin(), goals_.end(), [&](const Point& g) {
+            return square_distance(g, l_.region_side, p) >= spec_.robot_radius;
+          });
       if (clear_of_objects && clear_of_regions && clear_of_pocket(p, l_.grasp)) {
         robot_start_ = p;
         robot_heading_ = rng.uniform(-std::numbers::pi, std::numbers::pi);
@@ -362,36 +381,82 @@ class Generator {
     return f;
   }
 
+  // The pocket at pose k.pose when its walls keep the rule `walls_ok` and B1 has room to be
+  // grasped from outside (>= cg + r from the boundary).
+  template <class WallRule>
+  bool try_pocket(Pocket& k, WallRule walls_ok) {
+    if (!walls_ok(snapped(k.pose.apply(k.frame.walls())))) return false;
+    k.blocker = k.pose.apply(k.frame.blocker());
+    const double room = l_.grasp + spec_.robot_radius;
+    const Point& b = k.blocker;
+    if (b.x() < room || b.x() > l_.width - room || b.y() < room || b.y() > l_.height - room) {
+      return false;
+    }
+    k.goal = k.pose.apply(k.frame.goal());
+    k.mouth = k.pose.apply(k.frame.mouth());
+    k.outward = Point(-k.pose.sn, k.pose.cs);
+    k.keepout = crowded() ? l_.spacing : 2 * spec_.object_radius + 2 * l_.pair + kDenseRegionGap;
+    pocket_ = k;
+    return true;
+  }
+
+  // Vertices within kWallSnap of a wall moved onto it (a pocket flush with a wall).
+  Polygon snapped(Polygon p) const {
+    for (Point& v : p.vertices) {
+      for (const auto& [c, wall] : {std::pair<double*, double>{&v.x(), 0.0},
+                                    {&v.x(), l_.width},
+                                    {&v.y(), 0.0},
+                                    {&v.y(), l_.height}}) {
+        if (std::abs(*c - wall) <= kWallSnap) *c = wall;
+      }
+    }
+    return p;
+  }
+
+  // Fallback when no free pose fits (small rooms, random_instance.h "Sealed pocket"): the back
+  // wall flush with a room wall, the mouth facing the room; along the wall the pocket touches a
+  // corner or keeps >= w from the side walls (the familiar obstacles' boundary rule).
+  bool place_pocket_on_wall(Rng& rng, Pocket& k) {
+    const double half = k.frame.a + k.frame.t;
+    auto rule = [&](const Polygon& walls) {
+      return boundary_rule(walls, l_.width, l_.height, l_.passage);
+    };
+    for (int attempt = 0; attempt < spec_.max_attempts; ++attempt) {
+      const int wall = static_cast<int>(rng.index(4));  // bottom, right, top, left
+      const double along = (wall % 2 == 0) ? l_.width : l_.height;
+      if (along < 2 * half) continue;
+      double u = rng.uniform(half, along - half);  // the pocket's axis along the wall
+      if (u - half < l_.passage) u = half;         // touch the corner
+      if (along - u - half < l_.passage) u = along - half;
+      static constexpr double kCos[4] = {1, 0, -1, 0}, kSin[4] = {0, 1, 0, -1};
+      const double t = k.frame.t;
+      const Point origin[4] = {Point(u, t), Point(l_.width - t, u), Point(u, l_.height - t),
+                               Point(t, u)};
+      k.pose = Pose{origin[wall], kCos[wall], kSin[wall]};
+      if (try_pocket(k, rule)) return true;
+    }
+    return false;
+  }
+
   void place_pocket() {
     Rng rng = stream(kPocketStream);
     Pocket k;
     k.frame = pocket_frame();
-    const Polygon local = k.frame.walls();
-    const double rho = spec_.object_radius;
-    for (int attempt = 0; attempt < spec_.max_attempts; ++attempt) {
-      const double angle = rng.uniform(0, 2 * std::numbers::pi);
-      k.pose = Pose{inset_point(rng, 0), std::cos(angle), std::sin(angle)};
-      const Polygon walls = k.pose.apply(local);
-      const bool inside = std::all_of(walls.vertices.begin(), walls.vertices.end(), [&](auto& v) {
+    auto inside = [&](const Polygon& walls) {
+      return std::all_of(walls.vertices.begin(), walls.vertices.end(), [&](auto& v) {
         return v.x() >= l_.passage && v.x() <= l_.width - l_.passage && v.y() >= l_.passage &&
                v.y() <= l_.height - l_.passage;
       });
-      k.blocker = k.pose.apply(k.frame.blocker());
-      const double room = l_.grasp + spec_.robot_radius;
-      const Point& b = k.blocker;
-      if (!inside || b.x() < room || b.x() > l_.width - room || b.y() < room ||
-          b.y() > l_.height - room) {
-        continue;
-      }
-      k.goal = k.pose.apply(k.frame.goal());
-      k.mouth = k.pose.apply(k.frame.mouth());
-      k.outward = Point(-k.pose.sn, k.pose.cs);
-      k.keepout = 2 * rho + 2 * l_.pair + kDenseRegionGap;
-      pocket_ = k;
-      return;
+    };
+    for (int attempt = 0; attempt < spec_.max_attempts; ++attempt) {
+      const double angle = rng.uniform(0, 2 * std::numbers::pi);
+      k.pose = Pose{inset_point(rng, 0), std::cos(angle), std::sin(angle)};
+      if (try_pocket(k, inside)) return;
     }
-    placement_failed("the sealed pocket",
-                     "its walls keep >= " + shortest_decimal(l_.passage) + " m from the boundary");
+    if (crowded() && place_pocket_on_wall(rng, k)) return;
+    placement_failed("the sealed pocket", "its walls keep >= " + shortest_decimal(l_.passage) +
+                                              " m from the boundary" +
+                                              (crowded() ? ", or lie flush with a wall" : ""));
   }
 
   // Raster targets (random_instance.h, "Solvability"): the grasp positions of every start,
@@ -420,7 +485,7 @@ class Generator {
   // The pocket as the first familiar obstacle; false when it cuts a point off in the raster.
   bool commit_pocket() {
     Obstacle o;
-    o.polygon = pocket_->pose.apply(pocket_->frame.walls());
+    o.polygon = snapped(pocket_->pose.apply(pocket_->frame.walls()));
     o.box = geometry::box_of(o.polygon);
     const std::vector<int> cells = raster_.newly_blocked(o.polygon);
     if (!raster_.connects(source_, targets_, cells)) return false;
@@ -501,15 +566,8 @@ class Generator {
   }
 
   void translate(Obstacle& o, const Point& v) const {
-    for (Point& x : o.polygon.vertices) {
-      x += v;
-      for (const auto& [c, wall] : {std::pair<double*, double>{&x.x(), 0.0},
-                                    {&x.x(), l_.width},
-                                    {&x.y(), 0.0},
-                                    {&x.y(), l_.height}}) {
-        if (std::abs(*c - wall) <= kWallSnap) *c = wall;
-      }
-    }
+    for (Point& x : o.polygon.vertices) x += v;
+    o.polygon = snapped(std::move(o.polygon));
     o.box = geometry::box_of(o.polygon);
   }
 
@@ -705,6 +763,7 @@ class Generator {
                     " familiar and " + std::to_string(unknown) + " unknown obstacles";
     if (g.dense) d += "; dense spacing (region side " + fixed3(g.region_side) + ")";
     if (pocket_) d += "; goal l1 sealed in pocket " + g.pocket.walls + " behind B1";
+    if (crowded()) d += "; crowded fallback rules";
     if (stopped_) {
       d += "; obstacle placement stopped after " + std::to_string(spec_.max_attempts) +
            " consecutive failed attempts";
@@ -723,6 +782,7 @@ class Generator {
     g.region_side = l_.region_side;
     g.point_spacing = l_.spacing;
     g.redraws = redraw_;
+    g.crowded_rules = crowded();
     g.goals = goals_;
     if (pocket_) {
       g.pocket.present = true;
@@ -746,9 +806,12 @@ class Generator {
     return g;
   }
 
+  bool crowded() const { return rules_ == Rules::kCrowded; }
+
   const InstanceSpec& spec_;
   const Layout l_;
   const int redraw_;
+  const Rules rules_;
   PairRaster raster_;
   CoverageGrid coverage_;
   std::optional<Pocket> pocket_;
@@ -786,13 +849,14 @@ GoalClass goal_class_from_string(std::string_view text) {
               "' (expected 'random', 'cyclic' or 'sealed')");
 }
 
-GeneratedInstance generate_instance(const InstanceSpec& spec) {
-  check_spec(spec);
+namespace {
+
+GeneratedInstance generate_with(const InstanceSpec& spec, Rules rules) {
   // A draw that misses the target density (|achieved - target| > kDensityTolerance) is redrawn
   // too; after the last draw the closest solvable one is returned with density_reached false.
   std::optional<GeneratedInstance> best;
   for (int redraw = 0; redraw <= kMaxRedraws; ++redraw) {
-    std::optional<GeneratedInstance> g = Generator(spec, redraw).run();
+    std::optional<GeneratedInstance> g = Generator(spec, redraw, rules).run();
     if (!g) continue;
     if (g->density_reached) return std::move(*g);
     const double miss = std::abs(g->achieved_density - spec.obstacle_density);
@@ -803,6 +867,28 @@ GeneratedInstance generate_instance(const InstanceSpec& spec) {
   throw Error(describe(spec) + ": the exact solvability check failed on " +
               std::to_string(kMaxRedraws + 1) +
               " draws; use a lower obstacle_density or a larger workspace");
+}
+
+}  // namespace
+
+// The standard rules first; only a spec they cannot place is drawn again under the crowded
+// fallback (random_instance.h), so every instance the standard rules place stays bit for bit.
+GeneratedInstance generate_instance(const InstanceSpec& spec) {
+  check_spec(spec);
+  std::string standard;
+  try {
+    return generate_with(spec, Rules::kStandard);
+  } catch (const PlacementFailure& e) {
+    standard = e.what();
+  }
+  try {
+    return generate_with(spec, Rules::kCrowded);
+  } catch (const PlacementFailure& e) {
+    const std::string prefix = describe(spec) + ": ";
+    std::string crowded = e.what();
+    if (crowded.rfind(prefix, 0) == 0) crowded.erase(0, prefix.size());
+    throw Error(standard + "; under the crowded fallback rules too: " + crowded);
+  }
 }
 
 Scenario random_instance(const InstanceSpec& spec) { return generate_instance(spec).scenario; }

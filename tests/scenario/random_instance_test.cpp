@@ -255,6 +255,47 @@ TEST(RandomInstance, GoalClassNames) {
   EXPECT_THROW(goal_class_from_string("Sealed"), Error);
 }
 
+// Crowded fallback (random_instance.h): a 3.50 m room (N = 4 sealed, footprint 0.08) cannot hold
+// the 1.8 m pocket with passages of w = 1.1 m on both sides (1.8 + 2.2 > 3.50), so only the
+// fallback places it, flush with a wall; the instance is valid, certified and sealed, keeps the
+// passage rule and its objects apart, and the standard rules still place what they placed.
+TEST(RandomInstance, CrowdedFallbackPlacesWhatTheStandardRulesCannot) {
+  for (std::uint64_t seed = 0; seed < test_support::scaled(3); ++seed) {
+    InstanceSpec spec = make_spec(4, GoalClass::kSealed, 0.05, seed);
+    spec.footprint_density = 0.08;
+    const GeneratedInstance g = generate_instance(spec);
+    const Scenario& s = g.scenario;
+    SCOPED_TRACE(s.description);
+    const double W = s.workspace.vertices[2].x(), H = s.workspace.vertices[2].y();
+    ASSERT_LT(W, 1.8 + 2 * 1.1);
+    EXPECT_TRUE(g.crowded_rules);
+    EXPECT_NE(s.description.find("crowded fallback rules"), std::string::npos);
+    EXPECT_NO_THROW(validate(s));
+    EXPECT_TRUE(g.solvability.solvable) << g.solvability.failure;
+    EXPECT_TRUE(g.pocket.present);
+    EXPECT_TRUE(g.pocket.seal.failure.empty()) << g.pocket.seal.failure;
+    EXPECT_EQ(wall_gap(s.familiar.front().polygon, W, H), 0);  // flush with a wall
+    const double w = 2 * (spec.robot_radius + spec.object_radius) + spec.passage_margin;
+    for (const Polygon& o : obstacles_of(s)) {
+      const double b = wall_gap(o, W, H);
+      EXPECT_TRUE(b == 0 || b >= w - kTol) << "wall gap " << b;
+    }
+    for (std::size_t i = 0; i < s.objects.size(); ++i) {
+      for (std::size_t j = i + 1; j < s.objects.size(); ++j) {
+        const double d = (s.objects[i].disk.center - s.objects[j].disk.center).norm();
+        EXPECT_GE(d, 2 * spec.object_radius) << s.objects[i].name << ", " << s.objects[j].name;
+      }
+      const double robot = (s.objects[i].disk.center - s.robot.start).norm();
+      EXPECT_GE(robot, spec.object_radius + spec.robot_radius) << s.objects[i].name;
+    }
+    EXPECT_EQ(to_yaml(generate_instance(spec).scenario), to_yaml(s));  // deterministic
+  }
+  // A spec the standard rules place is not touched by the fallback.
+  InstanceSpec roomy = make_spec(4, GoalClass::kSealed, 0.05, 0);
+  roomy.footprint_density = 0.01;
+  EXPECT_FALSE(generate_instance(roomy).crowded_rules);
+}
+
 void expect_rejected(const InstanceSpec& spec, const std::string& field) {
   try {
     (void)generate_instance(spec);
@@ -292,6 +333,14 @@ TEST(RandomInstance, BadSpecsNameTheField) {
                     s.width = s.height = 4;
                   }),
                   "could not place");
+  // A room narrower than the pocket plus one passage (N = 4 sealed at footprint 0.2: 1.98 m):
+  // refused under both rule sets, the message naming both.
+  expect_rejected(with([](InstanceSpec& s) {
+                    s.goal_class = GoalClass::kSealed;
+                    s.objects = 4;
+                    s.footprint_density = 0.2;
+                  }),
+                  "under the crowded fallback rules too: could not place the sealed pocket");
 }
 
 }  // namespace
