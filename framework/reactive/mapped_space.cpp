@@ -33,13 +33,15 @@ using geometry::kContactSlack;  // obstacles are dilated by r + kContactSlack (d
 // centre. The obstacle moves by at most this distance.
 constexpr double kFlatVertexDistance = 1e-6;
 
-// Drops nearly flat vertices (kFlatVertexDistance), repeatedly, keeping at least 3.
-Polygon drop_flat_vertices(const Polygon& p) {
+// Drops nearly flat vertices (kFlatVertexDistance), repeatedly, keeping at least 3 and the
+// vertices in `keep`.
+Polygon drop_flat_vertices(const Polygon& p, const std::vector<Point>& keep = {}) {
   std::vector<Point> v = geometry::remove_collinear(p).vertices;
   bool changed = true;
   while (changed && v.size() > 3) {
     changed = false;
     for (std::size_t i = 0; i < v.size() && v.size() > 3; ++i) {
+      if (std::find(keep.begin(), keep.end(), v[i]) != keep.end()) continue;
       const Point& a = v[(i + v.size() - 1) % v.size()];
       const Point& c = v[(i + 1) % v.size()];
       if ((geometry::nearest_on_segment(a, c, v[i]) - v[i]).norm() < kFlatVertexDistance) {
@@ -287,6 +289,12 @@ std::optional<RegionSet> chain_pockets(const Polygon& hull, const Polygon& outer
 void add_pocket(MappedSpace& m, const Dilated& d, const Polygon& outer, double scale, bool cut) {
   Polygon pocket = drop_flat_vertices(outer);
   auto lid = find_lid(pocket, m.enclosing, kLidTolerance * scale);
+  if (!lid && !cut) {
+    // A lid endpoint (a hull vertex) within kFlatVertexDistance of the segment joining its
+    // neighbours was dropped as flat, and with it the lid: drop the others, keep the lid's.
+    lid = find_lid(outer, m.enclosing, kLidTolerance * scale);
+    if (lid) pocket = drop_flat_vertices(outer, {lid->first, lid->second});
+  }
   if (!lid && !cut) {
     // A bug, not bad input: every pocket of the hull has an edge on it. Per trial (the sweep's
     // status `error`, `rearm run`'s exit 1), not `stuck` and not an abort of the whole sweep.
