@@ -189,10 +189,14 @@ std::optional<Advance> closing_with_fragments(const Context& c, ActionState& a, 
   return out;
 }
 
-geometry::RegionSet fixed_components(const Context& c, double radius) {
+geometry::RegionSet fixed_components(const Context& c, double radius, bool with_fragments) {
   const Point any = c.map.workspace().vertices.front();  // not used by freespace_components
   const ScopedStopwatch sw(c.times.topology_s);
   ++c.topology_checks;
+  if (with_fragments) {
+    topology::TopologyCache none;  // bound − ∪fixed changes as the fragments grow
+    return topology::freespace_components(input_with_fragments(c, {}, radius, any, any), none);
+  }
   return topology::freespace_components(
       topology::make_input(c.map.workspace(), c.map.familiar(), {}, radius, any, any, std::nullopt,
                            c.topology_cache),
@@ -200,8 +204,8 @@ geometry::RegionSet fixed_components(const Context& c, double radius) {
 }
 
 std::optional<geometry::Region> fixed_component(const Context& c, double radius,
-                                                const Point& center) {
-  for (geometry::Region& f : fixed_components(c, radius)) {
+                                                const Point& center, bool with_fragments) {
+  for (geometry::Region& f : fixed_components(c, radius, with_fragments)) {
     if (geometry::contains(f, center)) return std::move(f);
   }
   return std::nullopt;

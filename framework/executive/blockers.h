@@ -56,10 +56,11 @@ std::optional<Advance> closing_with_fragments(const Context& c, ActionState& a, 
                                               const Point& center);
 
 // The components of bound − ∪(familiar obstacles) for a disk of `radius`, the movable objects
-// left out (the topology cache's set), and the one that contains `center` (nullopt: none).
-geometry::RegionSet fixed_components(const Context& c, double radius);
+// left out (the topology cache's set), and the one that contains `center` (nullopt: none);
+// with_fragments: the visible unknown fragments counted as fixed obstacles (fixed_with_fragments).
+geometry::RegionSet fixed_components(const Context& c, double radius, bool with_fragments = false);
 std::optional<geometry::Region> fixed_component(const Context& c, double radius,
-                                                const Point& center);
+                                                const Point& center, bool with_fragments = false);
 // Appends to `out` (once each) the indices of the movable objects but `except` whose disk comes
 // within `clearance` of x.
 void add_intruders(const Context& c, const Point& x, double clearance, const std::string& except,

@@ -29,18 +29,6 @@ const char* fixed_obstacles(const ActionState& a) {
   return a.fragment_plan.on ? "fixed obstacles and visible unknown obstacles" : "fixed obstacles";
 }
 
-// The topology check of the action's x* (Appendix III); a RELEASE the plan-among-fragments
-// unit sent on checks with the visible unknown fragments as fixed obstacles (without the topology
-// cache, which holds the familiar obstacles only).
-topology::TopologyResult check_target(const Context& c, const ActionState& a, double radius,
-                                      const Point& center, const Point& target) {
-  if (!a.fragment_plan.on) return timed_check(c, radius, center, target);
-  const topology::TopologyInput in =
-      input_with_fragments(c, c.map.movable(), radius, center, target);
-  const ScopedStopwatch sw(c.times.topology_s);
-  return topology::check_topology(in);
-}
-
 // B_M of a verdict kBlockedByObjects; RobustParams::object_blockers: a minimal subset of it
 // (blockers.h, minimal_blockers).
 std::vector<std::size_t> blockers(const Context& c, const ActionState& a,
@@ -223,6 +211,18 @@ bool release_elsewhere(const Context& c, ActionState& a, const topology::Topolog
 }
 
 }  // namespace
+
+// The topology check of the action's x* (Appendix III); a RELEASE the plan-among-fragments
+// unit sent on checks with the visible unknown fragments as fixed obstacles (without the topology
+// cache, which holds the familiar obstacles only).
+topology::TopologyResult check_target(const Context& c, const ActionState& a, double radius,
+                                      const Point& center, const Point& target) {
+  if (!a.fragment_plan.on) return timed_check(c, radius, center, target);
+  const topology::TopologyInput in =
+      input_with_fragments(c, c.map.movable(), radius, center, target);
+  const ScopedStopwatch sw(c.times.topology_s);
+  return topology::check_topology(in);
+}
 
 ReleasePoseParams pose_params(const Context& c, double radius) {
   ReleasePoseParams pp;

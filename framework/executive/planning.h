@@ -11,6 +11,7 @@
 #include "executive/recovery.h"
 #include "executive/release_pose.h"
 #include "geometry/polygon.h"
+#include "topology/topology_check.h"
 
 namespace rearm::executive {
 
@@ -23,6 +24,10 @@ bool knowledge_changed(const Context& c, const ActionState& a);
 // asks the recovery policy first.
 Advance plan(const Context& c, ActionState& a, const Pose& pose, Tick tick);
 void remember_plan(const Context& c, ActionState& a);
+// The topology check of the action's x* (Appendix III); a RELEASE the plan-among-fragments unit
+// sent on checks with the visible unknown fragments as fixed obstacles.
+topology::TopologyResult check_target(const Context& c, const ActionState& a, double radius,
+                                      const Point& center, const Point& target);
 // The release pose's parameters (release_pose.h) for the pair's dilation radius `radius`.
 ReleasePoseParams pose_params(const Context& c, double radius);
 // The exact freespace of the pair once `object` is gripped (the object carried, radius

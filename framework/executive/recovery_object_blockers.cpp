@@ -29,10 +29,11 @@
 namespace rearm::executive::units {
 namespace {
 
-// The objects the topology check finds separating `target` from the centre (but `except`).
-std::vector<std::size_t> separating(const Context& c, double radius, const Point& center,
-                                    const Point& target) {
-  const topology::TopologyResult res = timed_check(c, radius, center, target);
+// The objects the topology check finds separating `target` from the centre (the action's check:
+// with the visible unknown fragments when its plan counts them, planning.h).
+std::vector<std::size_t> separating(const Context& c, const ActionState& a, double radius,
+                                    const Point& center, const Point& target) {
+  const topology::TopologyResult res = check_target(c, a, radius, center, target);
   ++c.topology_checks;
   if (res.verdict != topology::Verdict::kBlockedByObjects) return {};
   return res.blocking;
@@ -77,7 +78,7 @@ std::optional<Advance> side_blockers(const Context& c, ActionState& a, const Pos
     add_intruders(c, g.approach, rp, a.object, in_way);
     add_intruders(c, g.contact, rp, a.object, in_way);
     add_intruders(c, g.pair_center, pair, a.object, in_way);
-    if (in_way.empty()) in_way = separating(c, rp, pose.x, g.approach);
+    if (in_way.empty()) in_way = separating(c, a, rp, pose.x, g.approach);
     std::erase_if(in_way, [&](std::size_t i) { return c.map.movable_ids()[i] == a.object; });
     if (in_way.empty()) continue;
     if (best == nullptr || in_way.size() < best_way.size()) {
@@ -96,14 +97,17 @@ std::optional<Advance> pose_blockers(const Context& c, ActionState& a, const Tri
   if (c.map.carried() != a.object) return std::nullopt;
   const RegionOfInterest& l = region(c, a.region);
   ReleasePoseParams pp = pose_params(c, trigger.radius);
+  // The action's own check (with the visible unknown fragments when its plan counts them): a
+  // pose the objects leave but the fragments close is no pose.
   const topology::TopologyResult here =
-      timed_check(c, trigger.radius, trigger.center, trigger.center);
+      check_target(c, a, trigger.radius, trigger.center, trigger.center);
   ++c.topology_checks;
   std::optional<ReleasePose> pose =
       release_pose(here.components, l, c.map, a.object, trigger.center, pp);
   std::vector<std::size_t> in_way;
   if (!pose) {
-    const std::optional<geometry::Region> free = fixed_component(c, trigger.radius, trigger.center);
+    const std::optional<geometry::Region> free =
+        fixed_component(c, trigger.radius, trigger.center, a.fragment_plan.on);
     if (!free) return std::nullopt;
     pp.objects = Objects::kIgnored;
     pose = release_pose({*free}, l, c.map, a.object, trigger.center, pp);
@@ -114,7 +118,7 @@ std::optional<Advance> pose_blockers(const Context& c, ActionState& a, const Tri
     }
     add_intruders(c, pose->pair, pp.clearance, a.object, in_way);
   }
-  if (in_way.empty()) in_way = separating(c, trigger.radius, trigger.center, pose->lead_in);
+  if (in_way.empty()) in_way = separating(c, a, trigger.radius, trigger.center, pose->lead_in);
   return fix_for(c, a, in_way, {{pose->lead_in, trigger.radius}, {pose->pair, trigger.radius}},
                  "objects close the release pose of " + a.object + " in " + a.region + " at " +
                      point_text(pose->pair) + " that the fixed obstacles leave");

@@ -92,6 +92,9 @@ struct DropState {
   // The kDropLevels index the point was chosen at (kDropLevels.size(): the clearest point, no
   // clearance asked); the point is kept while it still meets it.
   std::size_t level = 0;
+  // Chosen in a goal region (targets.cpp, drop_point): no point clear of the regions kept Fix
+  // mode's ways open. The point is then kept without the region rule.
+  bool in_region = false;
 };
 
 // The plan-among-fragments unit (recovery_plan_among_fragments.cpp): a visible unknown fragment

@@ -40,7 +40,8 @@ bool drop_clear(const Context& c, const Point& xc, double rho, double slack) {
 bool drop_kept(const Context& c, const ActionState& a, const Point& q, double rho) {
   if (a.drop.level == 0) return drop_clear(c, q, rho);
   const std::optional<std::string> carried = c.map.carried();
-  if (!carried || !clear_of_regions(q, c.p.robot_radius + rho, c.regions)) return false;
+  if (!carried) return false;
+  if (!a.drop.in_region && !clear_of_regions(q, c.p.robot_radius + rho, c.regions)) return false;
   if (a.drop.level >= kDropLevels.size()) return true;
   return known_clearance(c.map, q, *carried) >=
          kDropLevels[a.drop.level] * (c.p.robot_radius + max_object_radius(c));
@@ -82,13 +83,15 @@ topology::TopologyResult way_check(const Context& c, const Way& w,
 // way's movers not yet moved left out): rejected when the disk joins the objects that close the
 // way. At most kMaxWayChecks exact checks per way (over all the searches of its Fix-mode
 // entry); past them, the path's neighbourhood alone decides (rejected within reach + radius).
+// A way without a path (the guide's raster found none through passages the exact check passes,
+// narrower than its cells) has every candidate checked exactly, within the same budget.
 bool keeps_way_open(const Context& c, Way& w, const Point& q, double reach) {
-  double off = std::numeric_limits<double>::infinity();
+  double off = w.path.empty() ? 0 : std::numeric_limits<double>::infinity();
   for (std::size_t k = 1; k < w.path.size(); ++k) {
     off = std::min(off, (geometry::nearest_on_segment(w.path[k - 1], w.path[k], q) - q).norm());
   }
   if (off >= 2 * (reach + w.radius)) return true;
-  if (w.checks >= kMaxWayChecks) return off >= reach + w.radius;
+  if (w.checks >= kMaxWayChecks) return w.path.empty() || off >= reach + w.radius;
   ++w.checks;
   std::vector<geometry::Disk> objects = left_in_place(c, w);
   objects.push_back(geometry::Disk{q, reach});
@@ -112,6 +115,22 @@ bool keeps_ways_open(const Context& c, const std::string& carried, const Point& 
     if (!keeps_way_open(c, w, q, reach)) return false;
   }
   return true;
+}
+
+// The goal regions a drop must keep clear of even when no point clear of every region keeps Fix
+// mode's ways open: those within the pair's reach of a way's end (the interrupted action's target
+// region, where the way leads).
+std::vector<RegionOfInterest> regions_of_ways(const Context& c, double rho) {
+  std::vector<RegionOfInterest> out;
+  for (const RegionOfInterest& reg : c.regions) {
+    for (const Way& w : c.fix_ways) {
+      if (geometry::distance(reg.polygon, w.to) <= w.radius + c.p.robot_radius + rho) {
+        out.push_back(reg);
+        break;
+      }
+    }
+  }
+  return out;
 }
 
 }  // namespace
@@ -159,6 +178,8 @@ std::optional<Point> drop_point(const Context& c, ActionState& a, const geometry
   // Points near a drop point a fragment took before are skipped: fragments are what the sensor
   // sees now, so a point can look clear from one side and not from another.
   const std::string carried = c.map.carried().value_or("");
+  const std::vector<RegionOfInterest> targets = regions_of_ways(c, rho);
+  bool in_region = false;  // the second search: goal regions allowed, but those of the ways
   auto accept = [&](const Point& q, std::size_t k) {
     for (const Point& x : a.drop.rejected) {
       if ((q - x).norm() < kRejectedDropRadius * unit) return false;
@@ -167,12 +188,18 @@ std::optional<Point> drop_point(const Context& c, ActionState& a, const geometry
     for (const geometry::Disk& k : c.keep_clear) {
       if ((q - k.center).norm() < k.radius + radius) return false;
     }
-    return clear_of_regions(q, c.p.robot_radius + rho + kDropSlack, c.regions) &&
+    return clear_of_regions(q, c.p.robot_radius + rho + kDropSlack,
+                            in_region ? targets : c.regions) &&
            (k == need.size() || known_clearance(c.map, q, carried) >= need[k]) &&
            keeps_ways_open(c, carried, q, rho);
   };
-  const auto q = nearest_clear_point(where, center, raster_need, accept, c.p.guide, true);
+  auto q = nearest_clear_point(where, center, raster_need, accept, c.p.guide, true);
+  if (!q && !c.fix_ways.empty()) {
+    in_region = true;
+    q = nearest_clear_point(where, center, raster_need, accept, c.p.guide, true);
+  }
   a.drop.level = q ? q->level : kDropLevels.size();  // none: the paper's target, kept as is
+  a.drop.in_region = q && in_region;
   if (!q) return std::nullopt;
   if (q->level > 0) ++c.recoveries.pocket_drops;
   return q->point;

@@ -7,6 +7,12 @@
 // checked mode on the Box2D plant; no action may end infeasible, the task may not end
 // infeasible, no contact may occur, and every object must end in its goal region (the Box2D
 // world's positions, exact point location) as the task's formula demands.
+//
+// tests/corpus/crowded_partial: crowded instances of the study (experiments/sweeps/crowded.yaml)
+// with half their obstacles unknown, on which a RELEASE was declared infeasible because a pose the
+// movable objects left was closed by a visible unknown obstacle, which the recovery's fallback
+// (a pose among the fixed obstacles alone) did not count: the same assertions hold, the
+// certificate of the full map standing as independent truth.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -24,22 +30,17 @@
 namespace rearm::experiment {
 namespace {
 
-std::vector<std::string> crowded() {
+std::vector<std::string> corpus(const std::string& dir) {
   std::vector<std::string> out;
-  for (const auto& e : std::filesystem::directory_iterator("tests/corpus/crowded")) {
+  for (const auto& e : std::filesystem::directory_iterator(dir)) {
     if (e.path().extension() == ".yaml") out.push_back(e.path().stem().string());
   }
   std::sort(out.begin(), out.end());
   return out;
 }
 
-class Crowded : public ::testing::TestWithParam<std::string> {};
-
-TEST_P(Crowded, NoActionIsDeclaredInfeasibleAndEveryObjectReachesItsGoal) {
-  const scenario::Scenario s =
-      scenario::load_scenario("tests/corpus/crowded/" + GetParam() + ".yaml");
-  ASSERT_TRUE(s.unknown.empty()) << "every obstacle familiar";
-  ASSERT_EQ(s.objects.size(), 8u);
+// The assertions of the header on one instance.
+void expect_no_infeasible_and_completed(const scenario::Scenario& s, const std::string& name) {
   const scenario::SolvabilityReport cert = scenario::check_solvability(s);
   ASSERT_TRUE(cert.solvable) << cert.failure;
 
@@ -47,7 +48,7 @@ TEST_P(Crowded, NoActionIsDeclaredInfeasibleAndEveryObjectReachesItsGoal) {
   checked.checked = true;
   const RunRecord r = run_scenario(s, checked);
   const executive::TaskResult& t = r.result;
-  std::cout << GetParam() << ": " << executive::to_string(t.status) << " (" << t.reason << "), "
+  std::cout << name << ": " << executive::to_string(t.status) << " (" << t.reason << "), "
             << t.sim_time << " s simulated, " << t.fix_mode_entries << " Fix mode entries\n";
   for (const executive::ActionRecord& a : t.actions) {
     EXPECT_NE(a.outcome, executive::ActionOutcome::kInfeasible) << a.action << ": " << a.reason;
@@ -67,13 +68,36 @@ TEST_P(Crowded, NoActionIsDeclaredInfeasibleAndEveryObjectReachesItsGoal) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Corpus, Crowded, ::testing::ValuesIn(crowded()),
-                         [](const ::testing::TestParamInfo<std::string>& info) {
-                           std::string n = info.param;
-                           std::replace_if(
-                               n.begin(), n.end(), [](char ch) { return !std::isalnum(ch); }, '_');
-                           return n;
-                         });
+std::string test_name(const ::testing::TestParamInfo<std::string>& info) {
+  std::string n = info.param;
+  std::replace_if(
+      n.begin(), n.end(), [](char ch) { return !std::isalnum(ch); }, '_');
+  return n;
+}
+
+class Crowded : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(Crowded, NoActionIsDeclaredInfeasibleAndEveryObjectReachesItsGoal) {
+  const scenario::Scenario s =
+      scenario::load_scenario("tests/corpus/crowded/" + GetParam() + ".yaml");
+  ASSERT_TRUE(s.unknown.empty()) << "every obstacle familiar";
+  ASSERT_EQ(s.objects.size(), 8u);
+  expect_no_infeasible_and_completed(s, GetParam());
+}
+
+class CrowdedPartialMap : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(CrowdedPartialMap, NoActionIsDeclaredInfeasibleAndEveryObjectReachesItsGoal) {
+  const scenario::Scenario s =
+      scenario::load_scenario("tests/corpus/crowded_partial/" + GetParam() + ".yaml");
+  ASSERT_FALSE(s.unknown.empty()) << "obstacles the robot discovers";
+  expect_no_infeasible_and_completed(s, GetParam());
+}
+
+INSTANTIATE_TEST_SUITE_P(Corpus, Crowded, ::testing::ValuesIn(corpus("tests/corpus/crowded")),
+                         test_name);
+INSTANTIATE_TEST_SUITE_P(Corpus, CrowdedPartialMap,
+                         ::testing::ValuesIn(corpus("tests/corpus/crowded_partial")), test_name);
 
 }  // namespace
 }  // namespace rearm::experiment
