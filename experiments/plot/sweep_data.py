@@ -104,6 +104,15 @@ def sweep_name(dir_path, rows):
     return ", ".join(names) if names else os.path.basename(os.path.abspath(dir_path))
 
 
+def nominal_footprint(achieved, goal_class, n):
+    """The sweep file's footprint of a row (Trial.footprint), rounded to FOOTPRINT_DIGITS."""
+    if achieved is None:
+        return None
+    if goal_class == "sealed" and n:
+        achieved *= n / (n + 1)
+    return round(achieved, FOOTPRINT_DIGITS)
+
+
 class Trial:
     """The fields of one row that the report uses, parsed."""
 
@@ -132,10 +141,11 @@ class Trial:
         # kept apart in the table when they do vary.
         self.variant = (r.get("unknown_fraction", ""), r.get("unknown_shapes", ""),
                         r.get("workspace_rule", ""))
-        # The objects' share of the floor (the room sized from N and it), rounded: the column
-        # holds the achieved value, which differs from the sweep file's by rounding only.
-        f = number(r.get("footprint_density"))
-        self.footprint = round(f, FOOTPRINT_DIGITS) if f is not None else None
+        # The objects' share of the floor as the sweep file names the cell (the room sized from
+        # N and it), rounded. The column holds the achieved share, which differs from the sweep
+        # file's by rounding, except for sealed goals: their pocket's blocker is an (N + 1)-th
+        # object on a floor sized for N, so the column holds F (N + 1) / N.
+        self.footprint = nominal_footprint(number(r.get("footprint_density")), self.cls, self.n)
         # Difficulty of the instance (experiments/sweeps/README.md): objects on a cycle of the
         # goal-on-start dependency graph, objects whose goal another object occupies, objects
         # walled in by other objects at the start.

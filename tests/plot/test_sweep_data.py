@@ -212,5 +212,24 @@ class NoMatplotlibTest(unittest.TestCase):
         self.assertEqual(subprocess.run([sys.executable, "-c", code]).returncode, 0)
 
 
+class NominalFootprintTest(unittest.TestCase):
+    """A row's footprint is the sweep file's: the room's side is sqrt(N pi rho^2 / F) for N
+    objects, and a sealed instance adds its pocket's blocker, an (N + 1)-th object of the same
+    radius, to the share the column records."""
+
+    def test_sealed_and_other_classes_map_back_to_the_sweep_files_value(self):
+        rho = 0.25
+        for n in (4, 8, 12, 16):
+            for f in (0.01, 0.03, 0.05, 0.08, 0.12):
+                side = math.sqrt(n * math.pi * rho * rho / f)
+                plain = n * math.pi * rho * rho / (side * side)
+                sealed = (n + 1) * math.pi * rho * rho / (side * side)
+                self.assertEqual(sweep_data.nominal_footprint(plain, "random", n), f)
+                self.assertEqual(sweep_data.nominal_footprint(plain, "cyclic", n), f)
+                self.assertEqual(sweep_data.nominal_footprint(sealed, "sealed", n), f)
+                self.assertNotEqual(sweep_data.nominal_footprint(sealed, "random", n), f)
+        self.assertIsNone(sweep_data.nominal_footprint(None, "sealed", 4))
+
+
 if __name__ == "__main__":
     unittest.main()
