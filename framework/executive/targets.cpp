@@ -107,11 +107,17 @@ bool keeps_way_open(const Context& c, Way& w, const Point& q, double reach) {
 
 // Only a mover keeps off its way: the interrupted action's own object, set down so that Fix mode
 // can move the others, is gripped again right after them (measured: kept off the way too, it was
-// carried 1,000 s to a far drop point on a corpus instance).
+// carried 1,000 s to a far drop point on a corpus instance). A mover is never set down where its
+// disk could meet the disk it lay on when the way was found closed (the pair centre within
+// reach + ρ of it): dropped back there, it closed the way again, round after round.
 bool keeps_ways_open(const Context& c, const std::string& carried, const Point& q, double rho) {
   const double reach = c.p.robot_radius + c.p.grasp.dock_gap + rho;
   for (Way& w : c.fix_ways) {
-    if (std::find(w.mover_ids.begin(), w.mover_ids.end(), carried) == w.mover_ids.end()) continue;
+    const auto it = std::find(w.mover_ids.begin(), w.mover_ids.end(), carried);
+    if (it == w.mover_ids.end()) continue;
+    // Not back where it lay: the way was found closed with the mover there.
+    const geometry::Disk& lay = w.movers[static_cast<std::size_t>(it - w.mover_ids.begin())];
+    if ((q - lay.center).norm() < reach + lay.radius) return false;
     if (!keeps_way_open(c, w, q, reach)) return false;
   }
   return true;

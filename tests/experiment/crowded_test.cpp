@@ -11,8 +11,9 @@
 // tests/corpus/crowded_partial: crowded instances of the study (experiments/sweeps/crowded.yaml)
 // with half their obstacles unknown, on which a RELEASE was declared infeasible because a pose the
 // movable objects left was closed by a visible unknown obstacle, which the recovery's fallback
-// (a pose among the fixed obstacles alone) did not count: the same assertions hold, the
-// certificate of the full map standing as independent truth.
+// (a pose among the fixed obstacles alone) did not count, and one (cyclic, r4) on which Fix mode
+// set a blocker down where it had lain, round after round, until the time budget: the same
+// assertions hold, the certificate of the full map standing as independent truth.
 #include <gtest/gtest.h>
 
 #include <algorithm>
