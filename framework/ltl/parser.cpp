@@ -35,6 +35,8 @@
 #include <utility>
 #include <vector>
 
+#include "core/suggest.h"
+
 namespace rearm::ltl {
 namespace {
 
@@ -290,9 +292,14 @@ Token Lexer::word() {
       return make(TokenKind::Unary, split_letter_op(w[0]), 1);
     }
   }
+  const std::size_t open = skip_space(end);
   if (w == "move" || w == "grasp" || w == "release") {
-    const std::size_t open = skip_space(end);
     if (at(open, '(')) return action_predicate(w, open);
+  } else if (at(open, '(')) {
+    // A word applied to arguments is meant as a predicate: name it (a proposition followed by
+    // '(' is an error anyway).
+    fail(pos_, "move(region), grasp(object) or release(object,region)",
+         "the unknown predicate " + quote(w) + did_you_mean(w, {"move", "grasp", "release"}));
   }
   Token t = make(TokenKind::Atom, Op::True, w.size());
   t.name = std::string(w);

@@ -6,7 +6,9 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
+#include <string>
 #include <vector>
 
 namespace rearm::scenario::detail {
@@ -87,6 +89,30 @@ YAML::Node single_document(const std::string& text, const std::string& source, c
   }
 }
 
+namespace {
+
+// A folder of more entries is read this far only, for similar_file.
+constexpr std::size_t kMaxListedFiles = 10000;
+
+// "; did you mean '…'?" naming a file of the same folder whose name is close to the missing
+// one's, or "".
+std::string similar_file(const std::string& path) {
+  const std::filesystem::path p(path);
+  const std::filesystem::path folder = p.has_parent_path() ? p.parent_path() : ".";
+  std::error_code ec;
+  std::vector<std::string> names;
+  for (auto it = std::filesystem::directory_iterator(folder, ec);
+       !ec && it != std::filesystem::directory_iterator() && names.size() < kMaxListedFiles;
+       it.increment(ec)) {
+    names.push_back(it->path().filename().string());
+  }
+  const std::optional<std::string> near = closest_name(p.filename().string(), names);
+  if (!near) return "";
+  return "; did you mean '" + (p.has_parent_path() ? (folder / *near).string() : *near) + "'?";
+}
+
+}  // namespace
+
 std::string read_text_file(const std::string& path, const char* what) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) {
@@ -94,8 +120,10 @@ std::string read_text_file(const std::string& path, const char* what) {
   }
   std::ifstream in(path, std::ios::binary);
   if (!in) {
+    const int error = errno;
     throw ScenarioError(path, "file",
-                        std::string("cannot read ") + what + ": " + std::strerror(errno));
+                        std::string("cannot read ") + what + ": " + std::strerror(error) +
+                            (error == ENOENT ? similar_file(path) : ""));
   }
   std::ostringstream text;
   text << in.rdbuf();

@@ -26,6 +26,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/suggest.h"
 #include "geometry/polygon.h"
 #include "scenario/scenario_io.h"
 
@@ -243,7 +244,8 @@ class Fields {
                        [&](const char* a) { return name == a; }) == allowed_.end()) {
         throw ScenarioError(reader_.source(), full,
                             "unknown key (allowed here: " + allowed_list() + ") (line " +
-                                std::to_string(line) + ")");
+                                std::to_string(line) + ")" +
+                                did_you_mean(name, {allowed_.begin(), allowed_.end()}));
       }
       if (const auto seen = first_line.find(name); seen != first_line.end()) {
         throw ScenarioError(reader_.source(), full,

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "core/error.h"
+#include "core/suggest.h"
 #include "ltl/formula.h"
 
 namespace rearm::symbolic {
@@ -69,11 +70,11 @@ void Vocabulary::check(const Action& a) const {
   };
   if (!a.object.empty() && !known(objects, a.object)) {
     throw Error("unknown object '" + a.object + "' in " + a.to_string() +
-                " (known objects: " + join(objects) + ")");
+                " (known objects: " + join(objects) + ")" + did_you_mean(a.object, objects));
   }
   if (!a.region.empty() && !known(regions, a.region)) {
     throw Error("unknown region '" + a.region + "' in " + a.to_string() +
-                " (known regions: " + join(regions) + ")");
+                " (known regions: " + join(regions) + ")" + did_you_mean(a.region, regions));
   }
 }
 

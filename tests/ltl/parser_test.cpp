@@ -238,6 +238,8 @@ TEST(ParserTest, ActionPredicatesAreCanonicalized) {
 // ---------------------------------------------------------------------------------------
 // Errors: position and expectation.
 
+constexpr const char* kPredicates = "move(region), grasp(object) or release(object,region)";
+
 struct BadInput {
   std::string text;
   std::size_t line, column;
@@ -292,6 +294,13 @@ TEST(ParserTest, MalformedInputsReportPositionAndExpectation) {
       {"release(M1,l2,l3)", 1, 14, "')'", "','"},
       {"move(1)", 1, 6, "a region name", "'1'"},
       {"move(l1) grasp(M1)", 1, 10, op_or_end, "'grasp(M1)'"},
+      // A word applied to arguments is named as an unknown predicate, with the closest action
+      // verb when one is near (edit distance, core/suggest.h).
+      {"<>mvoe(l1)", 1, 3, kPredicates, "the unknown predicate 'mvoe'; did you mean 'move'?"},
+      {"F relase (M1, l1)", 1, 3, kPredicates,
+       "the unknown predicate 'relase'; did you mean 'release'?"},
+      {"a & gasp(M1)", 1, 5, kPredicates, "the unknown predicate 'gasp'; did you mean 'grasp'?"},
+      {"pick(M1)", 1, 1, kPredicates, "the unknown predicate 'pick'"},
       {"a\n&& )", 2, 4, formula, "')'"},
       {"a &&\n\n  (b", 3, 5, op_or_paren, end},
       {"a U\r\n\tb c", 2, 4, op_or_end, "'c'"},

@@ -507,7 +507,8 @@ TEST(ScenarioErrors, UnknownKey) {
   EXPECT_EQ(e.key(), "robot.radiuss");
   EXPECT_EQ(e.reason(),
             "unknown key (allowed here: radius, start, heading, v_max, omega_max, sensor_range) "
-            "(line 3)");
+            "(line 3); did you mean 'radius'?");
+  expect_error(edited("task:", "taks:"), "taks", "(line 13); did you mean 'task'?");
   expect_error(edited("{name: M2, center", "{name: M2, colour: red, center"), "objects[1].colour",
                "unknown key (allowed here: name, center, radius) (line 8)");
   expect_error(std::string(kBase) + "controller: {p: 20, eps: 1}\n", "controller.eps",
@@ -806,6 +807,21 @@ TEST(ScenarioErrors, MissingFile) {
   } catch (const ScenarioError& e) {
     EXPECT_EQ(e.source(), path);
     EXPECT_EQ(e.key(), "file");
+    EXPECT_EQ(e.reason(), "cannot read the scenario: No such file or directory");
+  }
+  // A near name in the same folder is suggested (the committed fig5.yaml for "fig5.yml"); a
+  // tie (fig6.yaml is one edit from fig3, fig4 and fig5) is not.
+  try {
+    load_scenario((kScenarios / "fig5.yml").string());
+    ADD_FAILURE() << "loaded a missing file";
+  } catch (const ScenarioError& e) {
+    EXPECT_EQ(e.reason(), "cannot read the scenario: No such file or directory; did you mean '" +
+                              (kScenarios / "fig5.yaml").string() + "'?");
+  }
+  try {
+    load_scenario((kScenarios / "fig6.yaml").string());
+    ADD_FAILURE() << "loaded a missing file";
+  } catch (const ScenarioError& e) {
     EXPECT_EQ(e.reason(), "cannot read the scenario: No such file or directory");
   }
   try {

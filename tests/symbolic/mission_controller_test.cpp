@@ -179,6 +179,10 @@ TEST(MissionController, RejectsFormulasOutsideTheFragment) {
   const Vocabulary v{{"M1"}, {"l1", "l2"}};
   EXPECT_NE(message("<>move(l7)", v).find("unknown region 'l7'"), std::string::npos);
   EXPECT_NE(message("<>release(M9,l1)", v).find("unknown object 'M9'"), std::string::npos);
+  // The closest known name when one is near and unique (core/suggest.h): M11 -> M1; l7 is one
+  // edit from both l1 and l2, so nothing is suggested.
+  EXPECT_NE(message("<>release(M11,l1)", v).find("did you mean 'M1'?"), std::string::npos);
+  EXPECT_EQ(message("<>move(l7)", v).find("did you mean"), std::string::npos);
   // The paper's fragment has no negation (Section II-B, footnote 4): every form is refused,
   // the implicit ones of ->, <-> and xor too, naming the paper's reason.
   for (const char* f :
