@@ -13,14 +13,16 @@
 # new.json,compare.md}. Environment: MACHINE (default debian12-2core), BUILD (default build),
 # OLD_BUILD (an existing build of the old revision with this benchmark, skips the worktree).
 set -euo pipefail
-OLD_REV=${1:-}
 source "$(dirname "$0")/lib/bench_common.sh"
+bench_parse "$@"
+set -- ${BENCH_ARGS[@]+"${BENCH_ARGS[@]}"}
+OLD_REV=${1:-}
 bench_prepare baselines_bench
-"$BUILD/bin/baselines_bench" --benchmark_out="$OUT/baselines_bench.json" \
-  --benchmark_out_format=json --benchmark_context=revision="$REV" \
-  --benchmark_context=load_at_start="$LOAD"
-echo "wrote $OUT/baselines_bench.json (revision $REV)"
-[ -n "$OLD_REV" ] || exit 0
+bench_run baselines_bench baselines_bench.json
+if [ -z "$OLD_REV" ]; then
+  bench_publish
+  exit 0
+fi
 
 if [ -z "${OLD_BUILD:-}" ]; then
   WORK=build-old
@@ -36,11 +38,11 @@ fi
 CMP="$OUT/baselines_compare"
 mkdir -p "$CMP"
 TMP=$(mktemp -d)
-trap 'rm -rf "$TMP"' EXIT
+trap 'rm -rf "$TMP" "$OUT"' EXIT
 OLD_NAME=$(git rev-parse --short "$OLD_REV")
 for m in mrs birrt buffer fmrs birrt_fmrs; do
   for side in old new; do
-    bin="$BUILD/bin/baselines_bench"
+    bin=$(bench_bin baselines_bench)
     [ "$side" = old ] && bin="$OLD_BUILD/bin/baselines_bench"
     rev="$REV"
     [ "$side" = old ] && rev="$OLD_NAME"
@@ -84,4 +86,4 @@ for name, b in runs["new"].items():
 open(f"{out}/compare.md", "w").write("\n".join(lines) + "\n")
 print("\n".join(lines))
 PY
-echo "wrote $CMP/{old.json,new.json,compare.md}"
+bench_publish

@@ -7,19 +7,20 @@
 # results/$MACHINE/ltl_vs_spin.md: rearm vs spin vs the ltl2ba numbers of docs/symbolic.md,
 # and a MET/MISSED line per target.
 #
-# Environment: MACHINE (default debian12-2core), BUILD (default build). Extra arguments go to
+# Environment: MACHINE (default debian12-2core), BUILD (default build). Other arguments go to
 # translate_bench, e.g. --benchmark_filter=fseq. Runs in about 5 minutes on 2 cores.
 set -euo pipefail
 source "$(dirname "$0")/lib/bench_common.sh"
+bench_parse "$@"
+set -- ${BENCH_ARGS[@]+"${BENCH_ARGS[@]}"}
 bench_prepare translate_bench
-"$BUILD/bin/translate_bench" --benchmark_out="$OUT/ltl_translate.json" \
-  --benchmark_out_format=json "$@"
+bench_run translate_bench ltl_translate.json "$@"
 
 SPIN_DIR=$(mktemp -d)  # spin may write files into its working directory
-trap 'rm -rf "$SPIN_DIR"' EXIT
+trap 'rm -rf "$SPIN_DIR" "$OUT"' EXIT
 CPU=$(grep -m1 '^model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ *//')
 
-python3 - "$BUILD/bin/translate_bench" "$OUT" "$SPIN_DIR" "$MACHINE" "$(nproc)" "$CPU" "$REV" \
+python3 - "$(bench_bin translate_bench)" "$OUT" "$SPIN_DIR" "$MACHINE" "$(nproc)" "$CPU" "$REV" \
   "$LOAD" <<'PYTHON'
 import datetime
 import json
@@ -210,6 +211,6 @@ with open(f"{out}/ltl_vs_spin.md", "w") as f:
     f.write("\n".join(lines) + "\n")
 print("\n".join(lines))
 missed = sum(t.startswith("- MISSED") for t in targets)
-print(f"bench_ltl: {len(targets) - missed} targets met, {missed} missed; "
-      f"wrote {out}/ltl_translate.json and {out}/ltl_vs_spin.md")
+print(f"bench_ltl: {len(targets) - missed} targets met, {missed} missed")
 PYTHON
+bench_publish

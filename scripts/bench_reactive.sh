@@ -7,12 +7,14 @@
 # space, tree construction, evaluation, commands and rebuild per K next to the authors' numbers
 # of §7, and a MET/MISSED line per target (K = 10).
 #
-# Environment: MACHINE (default debian12-2core), BUILD (default build). Extra arguments go to
+# Environment: MACHINE (default debian12-2core), BUILD (default build). Other arguments go to
 # reactive_bench, e.g. --benchmark_filter=Evaluate. Runs in about 30 s on 2 cores.
 set -euo pipefail
 source "$(dirname "$0")/lib/bench_common.sh"
+bench_parse "$@"
+set -- ${BENCH_ARGS[@]+"${BENCH_ARGS[@]}"}
 bench_prepare reactive_bench
-"$BUILD/bin/reactive_bench" --benchmark_out="$OUT/reactive.json" --benchmark_out_format=json "$@"
+bench_run reactive_bench reactive.json "$@"
 CPU=$(grep -m1 '^model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ *//')
 
 python3 - "$OUT" "$MACHINE" "$(nproc)" "$CPU" "$REV" "$LOAD" <<'PYTHON'
@@ -129,6 +131,6 @@ with open(f"{out}/reactive.md", "w") as f:
     f.write("\n".join(lines) + "\n")
 print("\n".join(lines))
 missed = sum(t.startswith("- MISSED") for t in targets)
-print(f"bench_reactive: {len(targets) - missed} targets met, {missed} missed; "
-      f"wrote {out}/reactive.json and {out}/reactive.md")
+print(f"bench_reactive: {len(targets) - missed} targets met, {missed} missed")
 PYTHON
+bench_publish

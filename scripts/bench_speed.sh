@@ -13,12 +13,14 @@
 # nine of the scaling sweep's (experiments/sweeps/scaling.yaml) across N and density; the
 # old binary takes about 1 min on them (three runs each: about 6 min in all).
 set -euo pipefail
-OLD_REV=${1:?usage: bench_speed.sh OLD_REVISION}
 source "$(dirname "$0")/lib/bench_common.sh"
-bench_prepare reactive_bench
-cmake --build "$BUILD" --target rearm topology_bench -j"$(nproc)"
+bench_parse "$@"
+set -- ${BENCH_ARGS[@]+"${BENCH_ARGS[@]}"}
+OLD_REV=${1:?usage: bench_speed.sh [--commit] OLD_REVISION}
+bench_prepare reactive_bench rearm topology_bench
 SPEED="$OUT/speed"
 mkdir -p "$SPEED"
+INSTANCES="results/$MACHINE/speed/instances"  # committed inputs, read in place
 if [ -z "${OLD_BUILD:-}" ]; then  # OLD_BUILD: an existing Release build of OLD_REVISION
   WORK=build-old
   if [ ! -d "$WORK/src" ]; then
@@ -34,7 +36,7 @@ OLD="$OLD_BUILD/bin"
 NEW="$BUILD/bin"
 
 TMP=$(mktemp -d)
-trap 'rm -rf "$TMP"' EXIT
+trap 'rm -rf "$TMP" "$OUT"' EXIT
 echo "instance,version,status,sim_time_s,rebuilds,controller_time_s,trajectory_sha256" \
   > "$SPEED/trials.csv"
 run() {  # version binary scenario-file name
@@ -51,7 +53,7 @@ PY
 # Three alternating runs of each (the table takes the fastest): single runs on a shared VM
 # varied by up to 1.4x between two invocations.
 for k in 1 2 3; do
-  for f in "$SPEED"/instances/*.yaml experiments/scenarios/fig5.yaml; do
+  for f in "$INSTANCES"/*.yaml experiments/scenarios/fig5.yaml; do
     n=$(basename "$f" .yaml)
     run old "$OLD" "$f" "$n"
     run new "$NEW" "$f" "$n"
@@ -65,7 +67,8 @@ bench_pair() {
     bin=$([ "$v" = old ] && echo "$OLD" || echo "$NEW")
     "$bin/$1" --benchmark_filter="$3" --benchmark_repetitions=3 \
       --benchmark_report_aggregates_only=true --benchmark_out="$SPEED/$2_$v.json" \
-      --benchmark_out_format=json > /dev/null
+      --benchmark_out_format=json --benchmark_context=revision="$([ "$v" = old ] && echo "$OLD_REV" || echo "$REV")" > /dev/null
+    bench_fresh "$SPEED/$2_$v.json" "$bin/$1"
   done
 }
 bench_pair reactive_bench reactive \
@@ -108,3 +111,4 @@ for part in ("reactive", "topology"):
 open(f"{speed}/trials.md", "w").write("\n".join(out) + "\n")
 print("\n".join(out))
 PY
+bench_publish

@@ -2,23 +2,25 @@
 # Thread scaling of the Monte Carlo runner: the smoke sweep (experiments/sweeps/smoke.yaml)
 # run from scratch with 1 thread and with 2 threads, REPEATS times each, alternating;
 # trials per second from the wall time of each whole run. Writes
-# results/$MACHINE/sweep_threads.json (every run) and sweep_threads.md (medians, the ratio and
+# sweep_threads.json (every run) and sweep_threads.md (medians, the ratio and
 # the target: 2 threads give >= 1.8x the trials per second of 1 thread).
 # Environment: MACHINE (default debian12-2core), BUILD (default build), REPEATS (default 3).
 # About 4 minutes per repeat on 2 cores.
 set -euo pipefail
 source "$(dirname "$0")/lib/bench_common.sh"
+bench_parse "$@"
+set -- ${BENCH_ARGS[@]+"${BENCH_ARGS[@]}"}
 bench_prepare rearm
 REPEATS=${REPEATS:-3}
 SWEEP=experiments/sweeps/smoke.yaml
 WORK=$(mktemp -d)
-trap 'rm -rf "$WORK"' EXIT
+trap 'rm -rf "$WORK" "$OUT"' EXIT
 RUNS="$WORK/runs.txt"
 for r in $(seq 1 "$REPEATS"); do
   for t in 1 2; do
     dir="$WORK/t${t}_r${r}"
     start=$(date +%s.%N)
-    "$BUILD/bin/rearm" sweep "$SWEEP" --out "$dir" --threads "$t" --quiet > /dev/null
+    "$(bench_bin rearm)" sweep "$SWEEP" --out "$dir" --threads "$t" --quiet > /dev/null
     end=$(date +%s.%N)
     trials=$(($(wc -l < "$dir/trials.csv") - 1))
     echo "$t $r $trials $start $end" >> "$RUNS"
@@ -55,3 +57,4 @@ lines += ["", f"Ratio 2 threads / 1 thread: **{ratio:.2f}** (target >= 1.8: "
 open(f"{out}/sweep_threads.md", "w").write("\n".join(lines) + "\n")
 print("\n".join(lines))
 PYTHON
+bench_publish

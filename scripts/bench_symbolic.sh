@@ -1,13 +1,13 @@
 #!/usr/bin/env bash
 # Mission-controller benchmarks (bench/symbolic): builds in Release and writes Google
-# Benchmark JSON to results/$MACHINE/symbolic_mission.json.
+# Benchmark JSON (medians of 3 repetitions) to symbolic_mission.json.
+# Environment: MACHINE (default debian12-2core), BUILD (default build). Other arguments go to
+# mission_bench.
 set -euo pipefail
-cd "$(dirname "$0")/.."
-bash scripts/setup.sh
-BUILD=${BUILD:-build}
-MACHINE=${MACHINE:-debian12-2core}
-cmake -S . -B "$BUILD" -DCMAKE_BUILD_TYPE=Release -DREARM_SANITIZE=OFF -DREARM_BUILD_BENCH=ON
-cmake --build "$BUILD" --target mission_bench -j"$(nproc)"
-mkdir -p "results/$MACHINE"
-"$BUILD/bin/mission_bench" --benchmark_out="results/$MACHINE/symbolic_mission.json" \
-  --benchmark_out_format=json --benchmark_repetitions=3 --benchmark_report_aggregates_only=true "$@"
+source "$(dirname "$0")/lib/bench_common.sh"
+bench_parse "$@"
+set -- ${BENCH_ARGS[@]+"${BENCH_ARGS[@]}"}
+bench_prepare mission_bench
+bench_run mission_bench symbolic_mission.json --benchmark_repetitions=3 \
+  --benchmark_report_aggregates_only=true "$@"
+bench_publish

@@ -1,23 +1,25 @@
 #!/usr/bin/env bash
 # Topology-check benchmarks (docs/executive.md "Benchmarks required").
 #
-# Builds and runs bench/topology/topology_bench (JSON into results/$MACHINE/topology.json):
+# Builds and runs bench/topology/topology_bench (JSON into topology.json):
 # check_topology swept over movable objects 1, 2, 4, 8, 16, 32 × familiar obstacles 0, 4, 16,
 # 64 (plus the target point 10 × 20), robot alone and carrying, with x* in the far corner
 # (usually reachable) and x* inside the farthest object (every step runs), each without a cache
 # (cold: bound − ∪fixed computed in every call) and with a warm TopologyCache (the familiar
 # obstacles unchanged, objects, x and x* moving); make_input and a whole warm re-check at
-# 10 × 20. Then writes results/$MACHINE/topology.md (tables, the ≤ 1 ms target at 10 objects ×
+# 10 × 20. Then writes topology.md (tables, the ≤ 1 ms target at 10 objects ×
 # 20 obstacles cold and warm, the fitted log-log growth rates) and, when matplotlib is
-# available, results/$MACHINE/topology.png (time vs objects, one line per obstacle count,
+# available, topology.png (time vs objects, one line per obstacle count,
 # log-log, cold and warm).
 #
-# Environment: MACHINE (default debian12-2core), BUILD (default build). Extra arguments go to
+# Environment: MACHINE (default debian12-2core), BUILD (default build). Other arguments go to
 # topology_bench, e.g. --benchmark_filter=FarCorner. Runs in about two minutes on 2 cores.
 set -euo pipefail
 source "$(dirname "$0")/lib/bench_common.sh"
+bench_parse "$@"
+set -- ${BENCH_ARGS[@]+"${BENCH_ARGS[@]}"}
 bench_prepare topology_bench
-"$BUILD/bin/topology_bench" --benchmark_out="$OUT/topology.json" --benchmark_out_format=json "$@"
+bench_run topology_bench topology.json "$@"
 LOAD_END=$(cut -d" " -f1-3 /proc/loadavg)
 CPU=$(grep -m1 '^model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ *//')
 
@@ -279,6 +281,6 @@ with open(f"{out}/topology.md", "w") as f:
     f.write("\n".join(lines) + "\n")
 print("\n".join(lines))
 missed = sum(t.startswith("- MISSED") for t in targets)
-print(f"bench_topology: {len(targets) - missed} targets met, {missed} missed; "
-      f"wrote {out}/topology.json, {out}/topology.md and {out}/topology.png")
+print(f"bench_topology: {len(targets) - missed} targets met, {missed} missed")
 PYTHON
+bench_publish
