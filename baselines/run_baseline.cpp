@@ -388,6 +388,7 @@ Json common_metrics(const scenario::Scenario& s, const BaselineRecord& r) {
           {"object_path_length_m", e.object_path_length},
           {"rebuilds", 0},
           {"topology_checks", 0},
+          {"topology_time_s", 0.0},
           {"actions", actions_json(e)},
           {"objects", objects_json(s, e)}};
 }

@@ -30,5 +30,6 @@ Command add_diffeo(CLI::App& program);
 Command add_run(CLI::App& program);
 Command add_baseline(CLI::App& program);
 Command add_sweep(CLI::App& program);
+Command add_topology(CLI::App& program);
 
 }  // namespace rearm::cli

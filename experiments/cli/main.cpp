@@ -8,6 +8,7 @@
 
 #include "command.h"
 #include "core/error.h"
+#include "core/suggest.h"
 #include "experiment/provenance.h"
 #include "options.h"
 
@@ -76,15 +77,23 @@ int main(int argc, char** argv) {
   const std::vector<Command> commands{
       rearm::cli::add_translate(program), rearm::cli::add_plan(program),
       rearm::cli::add_diffeo(program),    rearm::cli::add_run(program),
-      rearm::cli::add_baseline(program),  rearm::cli::add_sweep(program)};
+      rearm::cli::add_baseline(program),  rearm::cli::add_sweep(program),
+      rearm::cli::add_topology(program)};
   if (argc < 2) {
     std::fputs(program.help().c_str(), stdout);
     return rearm::cli::kExitUsage;
   }
   const std::string first = argv[1];
   bool known = first.rfind('-', 0) == 0;
-  for (const Command& c : commands) known = known || c.app->get_name() == first;
-  if (!known) return usage_error(nullptr, "unknown command '" + first + "'");
+  std::vector<std::string> names;
+  for (const Command& c : commands) {
+    known = known || c.app->get_name() == first;
+    names.push_back(c.app->get_name());
+  }
+  if (!known) {
+    return usage_error(nullptr,
+                       "unknown command '" + first + "'" + rearm::did_you_mean(first, names));
+  }
   try {
     program.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

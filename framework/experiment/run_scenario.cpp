@@ -124,6 +124,7 @@ std::string metrics_json(const scenario::Scenario& s, const RunRecord& r) {
                   {"object_path_length_m", t.object_path_length},
                   {"rebuilds", t.rebuilds},
                   {"topology_checks", t.topology_checks},
+                  {"topology_time_s", t.topology_time},
                   {"actions", actions_json(t.actions)},
                   {"objects", objects_json(s, r)}};
   return text(j, kIndent);

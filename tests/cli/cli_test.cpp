@@ -55,6 +55,7 @@ TEST(CliTest, HelpForTheProgramAndEachCommand) {
   const Result unknown = run("frobnicate");
   EXPECT_EQ(unknown.code, 2);
   EXPECT_TRUE(contains(unknown.out, "rearm: unknown command 'frobnicate'")) << unknown.out;
+  EXPECT_TRUE(contains(run("topolgy").out, "did you mean 'topology'?"));
   const Result version = run("--version");
   EXPECT_EQ(version.code, 0);
   EXPECT_EQ(version.out.rfind("rearm 0.", 0), 0u) << version.out;
@@ -74,7 +75,8 @@ TEST(CliTest, EveryCommandHasTheSameHelpAndErrorStyle) {
       {"baseline", fig3 + " --method birrt"},
       {"sweep", " experiments/sweeps/smoke.yaml --out /tmp/rearm-cli-unused"},
       {"sweep merge", " a b --out /tmp/rearm-cli-unused"},
-      {"sweep report", " /tmp/rearm-cli-unused"}};
+      {"sweep report", " /tmp/rearm-cli-unused"},
+      {"topology", fig3}};
   for (const auto& [name, valid] : commands) {
     const Result help = run(name + " --help");
     EXPECT_EQ(help.code, 0) << name;
@@ -413,6 +415,8 @@ TEST(CliTest, RunWritesMetricsFigureAndAnimation) {
   EXPECT_EQ(metrics["seed"], 3);
   EXPECT_EQ(metrics["plant"], "box2d");
   EXPECT_EQ(metrics["collisions"], 0);
+  EXPECT_GT(metrics["topology_checks"].get<int>(), 0);
+  EXPECT_GT(metrics["topology_time_s"].get<double>(), 0);
   const std::vector<Json> actions = column(metrics["actions"], "action");
   const auto disassemble = std::find(actions.begin(), actions.end(), "disassemble(M1)");
   ASSERT_NE(disassemble, actions.end());
@@ -423,6 +427,43 @@ TEST(CliTest, RunWritesMetricsFigureAndAnimation) {
   const bool plots = have_python_modules("import matplotlib; import PIL");
   EXPECT_EQ(std::filesystem::exists(dir + "/run.png"), plots);
   EXPECT_EQ(std::filesystem::exists(dir + "/run.gif"), plots);
+  std::filesystem::remove_all(dir);
+}
+
+// rearm topology: Fig. 3 of the paper, where M1 cuts the robot off from l1 (§VI-A); the same
+// scene with x* on the robot's side of M1 is reachable, and x* inside a familiar obstacle's
+// dilation is cut off by fixed obstacles. Fig. 5's M1 carried (the pair at M1) toward l2 is
+// blocked by M2, which sits in l2 (the paper's Fig. 5, Fix mode's first object).
+TEST(CliTest, TopologyNamesTheBlockingObjectsAndTimesTheCheck) {
+  const std::string dir = temp_dir();
+  const Result r =
+      run("topology experiments/scenarios/fig3.yaml --repeat 5 --json " + dir + "/t.json");
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_TRUE(contains(r.out,
+                       "verdict: blocked by objects; blocking objects (the first moved "
+                       "first): M1"))
+      << r.out;
+  const Json j = read_json(dir + "/t.json");
+  EXPECT_EQ(j["verdict"], "blocked by objects");
+  EXPECT_EQ(j["blocking"], Json::array({"M1"}));
+  EXPECT_EQ(j["repeat"], 5);
+  EXPECT_GT(j["check_cold_s"].get<double>(), 0);
+  EXPECT_GT(j["check_warm_median_s"].get<double>(), 0);
+  EXPECT_GE(j["check_warm_median_s"].get<double>(), j["check_warm_min_s"].get<double>());
+  const Result near = run("topology experiments/scenarios/fig3.yaml --to 2.5,3");
+  EXPECT_EQ(near.code, 0) << near.out;
+  EXPECT_TRUE(contains(near.out, "verdict: reachable")) << near.out;
+  const Result wall = run("topology experiments/scenarios/fig3.yaml --to 5,1");  // inside P1
+  EXPECT_EQ(wall.code, 0) << wall.out;
+  EXPECT_TRUE(contains(wall.out, "verdict: blocked by fixed obstacles")) << wall.out;
+  const Result carried = run("topology experiments/scenarios/fig5.yaml --carrying M1");
+  EXPECT_TRUE(contains(carried.out, "blocking objects (the first moved first): M2")) << carried.out;
+  const Result bad = run("topology experiments/scenarios/fig3.yaml --carrying M7");
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_TRUE(contains(bad.out, "unknown object 'M7'")) << bad.out;
+  const Result to = run("topology experiments/scenarios/fig3.yaml --to nowhere");
+  EXPECT_EQ(to.code, 2);
+  EXPECT_TRUE(contains(to.out, "neither a region of the scenario nor a point")) << to.out;
   std::filesystem::remove_all(dir);
 }
 

@@ -32,7 +32,7 @@ std::vector<std::string> succeeded(const RunRecord& r) {
 // metrics.json without the lines of the three timing fields.
 std::string untimed(const std::string& metrics) {
   static const std::regex timing(
-      R"re(\n\s*"(wall_time_s|controller_time_s|real_time_factor)": [^\n]*)re");
+      R"re(\n\s*"(wall_time_s|controller_time_s|real_time_factor|topology_time_s)": [^\n]*)re");
   return std::regex_replace(metrics, timing, "");
 }
 
