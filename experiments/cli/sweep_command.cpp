@@ -69,7 +69,7 @@ struct SweepArgs {
   experiment::SweepOptions options;
   bool quiet = false;
   std::vector<std::string> merge_dirs;
-  std::string merge_out, report_dir;
+  std::string merge_out, report_dir, report_out;
   bool no_plot = false;
   bool check_only = false;
 };
@@ -99,18 +99,28 @@ int run_merge(const SweepArgs& a) {
   std::printf(
       "merged %zu folders into %s: %zu of %zu trials (%zu duplicates, %zu cut lines dropped)\n",
       dirs.size(), out.c_str(), m.rows, m.total_trials, m.duplicates, m.dropped_torn);
+  if (m.rows < m.total_trials) {
+    std::printf(
+        "next: %zu trials are missing; run the missing shards (or resume one with "
+        "'rearm sweep SWEEP.yaml --out %s'), then merge again\n",
+        m.total_trials - m.rows, out.c_str());
+  } else {
+    std::printf("next: rearm sweep report %s\n", out.c_str());
+  }
   return kExitOk;
 }
 
+// DIR's tables, figures and OMPL logs, written into --out (default DIR): DIR is only read.
 int run_report(const SweepArgs& a) {
   const std::string& dir = a.report_dir;
+  const std::string out = a.report_out.empty() ? dir : a.report_out;
   const experiment::CsvTable t =
       experiment::read_csv((fs::path(dir) / experiment::kTrialsCsv).string());
   const std::string setup = read_file((fs::path(dir) / experiment::kSweepCopy).string());
-  const auto logs = experiment::write_ompl_logs(t, setup, (fs::path(dir) / "ompl").string());
-  std::printf("wrote %zu OMPL benchmark logs to %s/ompl\n", logs.size(), dir.c_str());
+  const auto logs = experiment::write_ompl_logs(t, setup, (fs::path(out) / "ompl").string());
+  std::printf("wrote %zu OMPL benchmark logs to %s/ompl\n", logs.size(), out.c_str());
   if (a.no_plot) return kExitOk;
-  if (run_plot("sweep report", "sweep.py", {"matplotlib"}, {dir}) == PlotOutcome::kFailed) {
+  if (run_plot("sweep report", "sweep.py", {"matplotlib"}, {dir, out}) == PlotOutcome::kFailed) {
     return kExitFailure;
   }
   return kExitOk;
@@ -195,15 +205,23 @@ void add_merge(CLI::App& sweep, SweepArgs& a) {
       "merge", "unite the rows of shard (or interrupted) folders of one sweep into --out");
   m->add_option("DIR", a.merge_dirs, "the folders to merge")->required();
   m->add_option("--out", a.merge_out, "the merged folder")->required()->type_name("DIR");
+  m->footer(
+      "Unites the rows of the DIRs (shards of one sweep, or interrupted runs of it) into --out,\n"
+      "each trial once (identical rows found twice kept once, a cut last line dropped), with\n"
+      "the sweep file. Refuses folders of another sweep file, damaged CSVs and conflicting\n"
+      "rows for one trial. Then: 'rearm sweep report OUT'. Exit: 0 merged, 2 bad usage or\n"
+      "folders that cannot be merged.");
 }
 
 void add_report(CLI::App& sweep, SweepArgs& a) {
   CLI::App* r = sweep.add_subcommand("report", "tables, plots and OMPL benchmark logs of a sweep");
   r->footer(
-      "Writes DIR/report.md, the plots DIR/*.png (python3 with matplotlib) and the OMPL\n"
-      "benchmark logs DIR/ompl/*.log (ompl_benchmark_statistics DIR/ompl/*.log -d DIR/sweep.db\n"
-      "builds Planner Arena's database).");
-  r->add_option("DIR", a.report_dir, "the sweep's folder")->required();
+      "Writes OUT/report.md, the plots OUT/*.png (python3 with matplotlib) and the OMPL\n"
+      "benchmark logs OUT/ompl/*.log (ompl_benchmark_statistics OUT/ompl/*.log -d OUT/sweep.db\n"
+      "builds Planner Arena's database); OUT is DIR unless --out names another folder, so a\n"
+      "committed or read-only sweep is analysed without copying it.");
+  r->add_option("DIR", a.report_dir, "the sweep's folder (only read)")->required();
+  r->add_option("--out", a.report_out, "write the report there (default DIR)")->type_name("OUT");
   r->add_flag("--no-plot", a.no_plot, "write the report and logs only");
 }
 

@@ -294,9 +294,9 @@ def plot_solved_within_t(s, methods, path):
     finish(s, fig, path)
 
 
-def write_figures(s):
-    """Every figure of FIGURES into the sweep's folder."""
-    d = s.dir
+def write_figures(s, d=None):
+    """Every figure of FIGURES into folder d (default the sweep's folder)."""
+    d = s.dir if d is None else d
     methods = presentation_order(s.methods)
     plot_success_vs_n(s, methods, os.path.join(d, "success_vs_n.png"))
     plot_median_vs_n(s, methods, os.path.join(d, "time_vs_n.png"), "time",

@@ -213,6 +213,57 @@ TEST_F(SweepCli, AKilledSweepRunAgainLosesAndDuplicatesNothing) {
   expect_same_rows(after, reference());
 }
 
+// Every file under `dir` (relative path) with its bytes.
+std::map<std::string, std::string> snapshot(const fs::path& dir) {
+  std::map<std::string, std::string> out;
+  for (const auto& e : fs::recursive_directory_iterator(dir)) {
+    if (!e.is_regular_file()) continue;
+    std::ifstream in(e.path(), std::ios::binary);
+    std::ostringstream bytes;
+    bytes << in.rdbuf();
+    out[fs::relative(e.path(), dir).string()] = bytes.str();
+  }
+  return out;
+}
+
+// `sweep report DIR --out OUT` reads DIR only: a read-only copy (permissions off; the byte
+// comparison holds for a user the permissions do not stop, as root) is left as it was, and the
+// report, figures and OMPL logs land in OUT.
+TEST_F(SweepCli, ReportOutLeavesTheSweepFolderUntouched) {
+  const fs::path ro = work_dir() / "read_only";
+  const fs::path out = work_dir() / "report_elsewhere";
+  fs::remove_all(ro);
+  fs::remove_all(out);
+  fs::copy(*reference_dir_, ro, fs::copy_options::recursive);
+  fs::remove_all(ro / "ompl");  // the other test's output, if it ran first
+  fs::remove(ro / "report.md");
+  const std::map<std::string, std::string> before = snapshot(ro);
+  for (const auto& e : fs::recursive_directory_iterator(ro)) {
+    fs::permissions(e.path(),
+                    fs::perms::owner_write | fs::perms::group_write | fs::perms::others_write,
+                    fs::perm_options::remove);
+  }
+  fs::permissions(ro, fs::perms::owner_write | fs::perms::group_write | fs::perms::others_write,
+                  fs::perm_options::remove);
+  ASSERT_EQ(run("sweep report " + ro.string() + " --out " + out.string()), 0);
+  fs::permissions(ro, fs::perms::owner_write, fs::perm_options::add);
+  EXPECT_EQ(snapshot(ro), before);
+  EXPECT_FALSE(fs::is_empty(out / "ompl"));
+  bool plots = false;  // as the command looks for a python3 with matplotlib
+  const char* env = std::getenv("REARM_PYTHON");
+  for (const std::string& py :
+       {std::string(env ? env : ""), std::string("python3"), std::string("/usr/bin/python3")}) {
+    plots = plots ||
+            (!py.empty() &&
+             std::system(("'" + py + "' -c 'import matplotlib' > /dev/null 2>&1").c_str()) == 0);
+  }
+  EXPECT_EQ(fs::exists(out / "report.md"), plots);
+  EXPECT_EQ(fs::exists(out / "success_vs_n.png"), plots);
+  for (const auto& e : fs::recursive_directory_iterator(ro)) {
+    fs::permissions(e.path(), fs::perms::owner_write, fs::perm_options::add);
+  }
+}
+
 TEST_F(SweepCli, OmplBenchmarkStatisticsReadsTheLogs) {
   ASSERT_EQ(run("sweep report " + reference_dir_->string() + " --no-plot"), 0);
   std::string logs;
