@@ -10,7 +10,9 @@ elsewhere):
   OUT/report.md               per class x method x N x target density: trials, successes,
                               success rate with its Wilson 95% interval, median and IQR of the
                               time, median achieved density, actions and robot path; the status
-                              breakdown per method; and "what the numbers say", computed
+                              breakdown per method; "what the numbers say", computed; and
+                              what the study cost (total CPU time, one-thread estimates per
+                              method and per cell)
   OUT/success_vs_n.png        success rate vs N (rows: goal class, columns: target density)
   OUT/time_vs_n.png           median and IQR of the time vs N, log axis
   OUT/success_vs_density.png  success rate vs achieved density, binned

@@ -131,6 +131,9 @@ class Trial:
         planning = number(r.get("planning_time_s"))
         self.time = planning if planning is not None else number(r.get("compute_time_s"))
         self.time_limit = number(r.get("time_limit_s"))
+        # What the trial cost: its wall time on one worker thread, and the process CPU time.
+        self.wall_time = number(r.get("wall_time_s"))
+        self.cpu_time = number(r.get("cpu_time_s"))
         self.actions = number(r.get("actions"))
         self.path = number(r.get("robot_path_m"))
         self.reason = r.get("reason", "")

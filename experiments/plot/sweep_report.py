@@ -85,7 +85,7 @@ def write_report(s, path, figures):
     else:
         lines += ["## What the numbers say", ""]
         lines += ["- " + line for line in findings(s)] + [""]
-        lines += cell_table(s) + status_table(s) + reason_lines(s)
+        lines += cell_table(s) + status_table(s) + reason_lines(s) + cost_lines(s)
         lines += ["## Figures", ""]
         lines += ["- `%s`: %s" % (name, what) for name, what in figures] + [""]
     with open(path, "w") as f:
@@ -134,6 +134,37 @@ def cell_table(s):
                         iqr_text(c.time), median_text(c.time_all), median_text(c.achieved),
                         median_text(c.actions), median_text(c.path)]
                 lines.append(md_row(row))
+    return lines + [""]
+
+
+def hours(seconds):
+    return "%.2f h" % (seconds / 3600.0)
+
+
+def cost_lines(s):
+    """What the study cost: its total CPU time, and per method and per cell the one-thread
+    estimate (the sum of the trials' wall times: a worker thread runs one trial at a time)."""
+    cpu = sum(t.cpu_time or 0 for t in s.trials)
+    wall = sum(t.wall_time or 0 for t in s.trials)
+    lines = ["## What the study cost", "",
+             "Total CPU time %s; on one thread about %s (the trials' wall times summed), on T "
+             "threads about that divided by T when nothing else runs. Per method:" %
+             (hours(cpu), hours(wall)), ""]
+    lines += md_head(["method", "trials", "one thread", "CPU"])
+    for m in s.methods:
+        ts = [t for t in s.trials if t.method == m]
+        lines.append(md_row([m, str(len(ts)), hours(sum(t.wall_time or 0 for t in ts)),
+                             hours(sum(t.cpu_time or 0 for t in ts))]))
+    per = {}
+    for t in s.trials:
+        key = (t.cls, t.n, t.density, t.footprint)
+        per[key] = per.get(key, 0) + (t.wall_time or 0)
+    lines += ["", "One-thread estimate per cell (every method):", ""]
+    lines += md_head(["class", "N", "density", "footprint", "one thread"])
+    for (cls, n, d, f), w in sorted(per.items(), key=lambda kv: (kv[0][0], kv[0][1] or 0,
+                                                                   kv[0][2] or 0, kv[0][3] or 0)):
+        lines.append(md_row([cls, "-" if n is None else str(n), fmt_density(d),
+                             "-" if f is None else "%g" % f, "%.0f s" % w]))
     return lines + [""]
 
 

@@ -167,6 +167,32 @@ class MethodOrderTest(unittest.TestCase):
         self.assertEqual([line.split(" | ")[0][2:] for line in section[2:]], self.order)
 
 
+class CostTest(unittest.TestCase):
+    """The report's cost section against hand sums: 3 trials of 600 s, 1,200 s and 1,800 s of
+    wall time (1 h in all) and 360 s of CPU each, two methods, two cells."""
+
+    def test_totals_per_method_and_per_cell(self):
+        header = HEADER + ["wall_time_s", "cpu_time_s"]
+        rows = [("rearm", 2, "600", "360"), ("rearm", 4, "1200", "360"), ("birrt", 2, "1800", "360")]
+        with tempfile.TemporaryDirectory() as d:
+            with open(os.path.join(d, "trials.csv"), "w") as f:
+                f.write(",".join(header) + "\n")
+                for m, n, wall, cpu in rows:
+                    f.write(csv_line(m, n=n).rstrip("\n") + ",%s,%s\n" % (wall, cpu))
+            with open(os.path.join(d, "sweep.yaml"), "w") as f:
+                f.write("name: cost\n")
+            path = os.path.join(d, "report.md")
+            sweep_report.write_report(sweep_data.Sweep(d), path, [])
+            with open(path) as f:
+                text = f.read()
+        section = text.split("## What the study cost\n\n")[1]
+        self.assertIn("Total CPU time 0.30 h; on one thread about 1.00 h", section)
+        self.assertIn("| rearm | 2 | 0.50 h | 0.20 h |", section)
+        self.assertIn("| birrt | 1 | 0.50 h | 0.10 h |", section)
+        self.assertIn("| random | 2 | 0.1 | - | 2400 s |", section)  # rearm 600 + birrt 1800
+        self.assertIn("| random | 4 | 0.1 | - | 1200 s |", section)
+
+
 class RecoveryColumnsTest(unittest.TestCase):
     def test_between_fix_mode_entries_and_collisions(self):
         header = ["trial", "actions", "fix_mode_entries", "replans", "guides", "back_outs",
