@@ -13,6 +13,8 @@ elsewhere):
                               breakdown per method; "what the numbers say", computed; and
                               what the study cost (total CPU time, one-thread estimates per
                               method and per cell)
+  OUT/answer_CLASS.png        one per goal class: success rate vs N per method, everything
+                              else pooled, Wilson 95% bands (answer_figures.py)
   OUT/success_vs_n.png        success rate vs N (rows: goal class, columns: target density)
   OUT/time_vs_n.png           median and IQR of the time vs N, log axis
   OUT/success_vs_density.png  success rate vs achieved density, binned
@@ -39,6 +41,7 @@ import sys
 # The modules sit beside this file, which is sys.path[0] when it runs as a script (from
 # experiments/plot or installed in share/rearm/plot): the data and statistics, report.md, the
 # figures, the crowded-room figures.
+import answer_figures
 import crowded_figures
 import sweep_data
 import sweep_figures
@@ -56,11 +59,13 @@ def main(argv):
         return 1
     os.makedirs(out, exist_ok=True)
     s = sweep_data.Sweep(d)
-    figures = list(sweep_figures.FIGURES)
+    figures = answer_figures.figures(s) + list(sweep_figures.FIGURES)
     if s.trials and crowded_figures.applies(s):
         figures += crowded_figures.FIGURES
     sweep_report.write_report(s, os.path.join(out, "report.md"), figures)
     if s.trials:
+        order = sweep_figures.presentation_order(s.methods)
+        answer_figures.write_figures(s, order, lambda name: os.path.join(out, name))
         sweep_figures.write_figures(s, out)
         crowded_figures.write_figures(s, sweep_figures.presentation_order(s.methods),
                                       lambda name: os.path.join(out, name))

@@ -58,12 +58,27 @@ class EntryPointTest(unittest.TestCase):
             run = subprocess.run([sys.executable, os.path.join(PLOT_DIR, "sweep.py"), d],
                                  capture_output=True, text=True)
             self.assertEqual(run.returncode, 0, run.stderr)
-            self.assertIn("report.md and 6 figures (24 trials)", run.stdout)
-            for name, _ in sweep_figures.FIGURES:
+            self.assertIn("report.md and 8 figures (24 trials)", run.stdout)
+            for name in [n for n, _ in sweep_figures.FIGURES] + ["answer_random.png",
+                                                                  "answer_sealed.png"]:
                 self.assertGreater(os.path.getsize(os.path.join(d, name)), 0, name)
             with open(os.path.join(d, "report.md")) as f:
                 report = f.read()
             self.assertIn("methods: " + ", ".join(METHODS), report)
+
+    def test_answer_points_are_the_pooled_counts(self):
+        # rearm is METHODS[4]: rows 4, 10, 16, 22, all random goals at N = 2 (i % 3 == 1), row
+        # 10 failed (i % 5 == 0): 3 of 4; sealed goals have no rearm row.
+        import answer_figures
+        import sweep_data
+        with tempfile.TemporaryDirectory() as d:
+            write_sweep(d)
+            s = sweep_data.Sweep(d)
+        pts = answer_figures.points(s, "random", "rearm")
+        self.assertEqual([(n, c.k, c.n) for n, c in pts], [(2, 3, 4)])
+        self.assertEqual(answer_figures.points(s, "sealed", "rearm"), [])
+        self.assertEqual([f for f, _ in answer_figures.figures(s)],
+                         ["answer_random.png", "answer_sealed.png"])
 
     def test_usage(self):
         script = os.path.join(PLOT_DIR, "sweep.py")
@@ -120,14 +135,15 @@ class CrowdedFiguresTest(unittest.TestCase):
             run = subprocess.run([sys.executable, os.path.join(PLOT_DIR, "sweep.py"), d],
                                  capture_output=True, text=True)
             self.assertEqual(run.returncode, 0, run.stderr)
-            self.assertIn("report.md and 9 figures (32 trials)", run.stdout)
+            # 6 of every sweep, 1 answer figure (random goals only), 3 crowded ones.
+            self.assertIn("report.md and 10 figures (32 trials)", run.stdout)
             for name, _ in crowded_figures.FIGURES:
                 self.assertGreater(os.path.getsize(os.path.join(d, name)), 0, name)
         with tempfile.TemporaryDirectory() as d:
             write_sweep(d)  # no footprint column
             run = subprocess.run([sys.executable, os.path.join(PLOT_DIR, "sweep.py"), d],
                                  capture_output=True, text=True)
-            self.assertIn("report.md and 6 figures", run.stdout)
+            self.assertIn("report.md and 8 figures", run.stdout)
             for name, _ in crowded_figures.FIGURES:
                 self.assertFalse(os.path.exists(os.path.join(d, name)), name)
 
