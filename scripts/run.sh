@@ -13,5 +13,5 @@ cmake -S . -B "$BUILD" -DCMAKE_BUILD_TYPE=Release -DREARM_SANITIZE=OFF -DREARM_B
   -DREARM_BUILD_BENCH=OFF
 cmake --build "$BUILD" --target rearm -j"$(nproc)"
 echo "== Fig. 5: formula (1) in experiments/scenarios/fig5.yaml"
-"$BUILD/bin/rearm" run experiments/scenarios/fig5.yaml --out "$OUT"
+"$BUILD/bin/rearm" run experiments/scenarios/fig5.yaml --out "$OUT" --snapshots 4
 echo "== the figure: $OUT/run.png, the animation: $OUT/run.gif, the metrics: $OUT/metrics.json"

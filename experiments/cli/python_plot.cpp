@@ -1,11 +1,15 @@
 #include "python_plot.h"
 
+#include <CLI/CLI.hpp>
 #include <cstdio>
 #include <cstdlib>
 
 namespace rearm::cli {
 
 namespace fs = std::filesystem;
+
+// The most snapshot panels a figure holds (a panel per action is already unreadable).
+constexpr int kMaxSnapshots = 24;
 
 std::string shell_quote(const std::string& s) {
   std::string q = "'";
@@ -70,10 +74,21 @@ PlotOutcome run_plot(const std::string& command, const std::string& script,
 }
 
 bool draw_run(const std::string& command, const fs::path& trajectory, const std::string& out_dir,
-              bool animation) {
-  std::vector<std::string> args{trajectory.string(), out_dir};
+              bool animation, const FigureStyle& style) {
+  std::vector<std::string> args{trajectory.string(), out_dir, "--format=" + style.format,
+                                "--snapshots=" + std::to_string(style.snapshots)};
   if (!animation) args.push_back("--no-animation");
   return run_plot(command, "run.py", {"matplotlib", "PIL"}, args) != PlotOutcome::kFailed;
+}
+
+void add_figure_flags(CLI::App& command, FigureStyle& style) {
+  command
+      .add_option("--snapshots", style.snapshots,
+                  "draw K successive panels of the run, cut at action ends (default 1)")
+      ->check(CLI::Range(1, kMaxSnapshots))
+      ->type_name("K");
+  command.add_option("--format", style.format, "the figure's file format (default png)")
+      ->check(CLI::IsMember({"png", "pdf", "svg"}));
 }
 
 }  // namespace rearm::cli

@@ -9,6 +9,10 @@
 #include <string>
 #include <vector>
 
+namespace CLI {
+class App;
+}
+
 namespace rearm::cli {
 
 // s quoted for /bin/sh.
@@ -32,10 +36,19 @@ enum class PlotOutcome { kDrawn, kSkipped, kFailed };
 PlotOutcome run_plot(const std::string& command, const std::string& script,
                      const std::vector<std::string>& modules, const std::vector<std::string>& args);
 
-// The figure DIR/run.png and, unless !animation, the animation DIR/run.gif of a trajectory.json
-// (experiments/plot/run.py, for `rearm run` and `rearm baseline`); false when the script ran
-// and failed (a missing python or script is a warning only).
+// How run.py draws the figure: its file format and the number of snapshot panels.
+struct FigureStyle {
+  std::string format = "png";  // png, pdf or svg
+  int snapshots = 1;
+};
+
+// The figure DIR/run.FORMAT (with DIR/run_figure.json) and, unless !animation, the animation
+// DIR/run.gif of a trajectory.json (experiments/plot/run.py, for `rearm run` and `rearm
+// baseline`); false when the script ran and failed (a missing python or script is a warning
+// only).
 bool draw_run(const std::string& command, const std::filesystem::path& trajectory,
-              const std::string& out_dir, bool animation);
+              const std::string& out_dir, bool animation, const FigureStyle& style = {});
+// --snapshots K and --format png|pdf|svg of the commands that draw run.png.
+void add_figure_flags(CLI::App& command, FigureStyle& style);
 
 }  // namespace rearm::cli

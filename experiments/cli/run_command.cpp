@@ -26,7 +26,11 @@ constexpr const char* kFooter =
     "Writes DIR/metrics.json (status, collisions, times, actions, path lengths, ...),\n"
     "DIR/trajectory.json, the figure DIR/run.png and the animation DIR/run.gif (drawn by\n"
     "experiments/plot/run.py with python3, matplotlib and pillow; skipped with a warning\n"
-    "when they are missing). DIR defaults to out/<scenario name>.\n"
+    "when they are missing). DIR defaults to out/<scenario name>. The figure has axes in\n"
+    "metres, the robot's end pose and sensor range, carried stretches drawn solid and every\n"
+    "action numbered where it ended (Fix-mode actions in red squares), listed in\n"
+    "DIR/run_figure.json; --snapshots K cuts the run at action ends into K panels (the\n"
+    "paper's Figs. 3-5), --format png|pdf|svg chooses the file (run.pdf, run.svg).\n"
     "--checked: check the closed loop's invariants on every tick (finite commands, no overlap\n"
     "beyond Box2D's slop, det Dh > 0, the law's model point in the model freespace); a\n"
     "violation is an internal error (exit 1) naming it.\n"
@@ -44,6 +48,7 @@ struct RunArgs {
   experiment::RunOptions options;
   int stride = kDefaultStride;
   bool no_plot = false, no_animation = false;
+  FigureStyle style;
 };
 
 void print_summary(const scenario::Scenario& s, const experiment::RunRecord& r) {
@@ -82,7 +87,9 @@ int run(RunArgs a) {
   write_file_atomically(trajectory.string(), experiment::trajectory_json(s, r, a.stride));
   print_summary(s, r);
   std::printf("wrote %s and %s\n", metrics.string().c_str(), trajectory.string().c_str());
-  if (!a.no_plot && !draw_run("run", trajectory, a.out_dir, !a.no_animation)) return kExitFailure;
+  if (!a.no_plot && !draw_run("run", trajectory, a.out_dir, !a.no_animation, a.style)) {
+    return kExitFailure;
+  }
   return r.result.status == executive::TaskStatus::kCompleted ? kExitOk : kExitFailure;
 }
 
@@ -103,6 +110,7 @@ Command add_run(CLI::App& program) {
       ->check(CLI::IsMember({"paper", "robust"}));
   c->add_flag("--checked", a->options.checked, "check the closed loop's invariants every tick");
   add_plot_flags(*c, a->no_plot, a->no_animation);
+  add_figure_flags(*c, a->style);
   c->add_flag("--spaces", a->options.spaces, "record and draw the mapped and model spaces");
   return {c, [a] { return run(*a); }};
 }

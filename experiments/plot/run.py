@@ -1,12 +1,19 @@
 #!/usr/bin/env python3
 """Figure and animation of one `rearm run` in the paper's style (Figs. 3-5).
 
-usage: run.py TRAJECTORY.json OUT_DIR [--no-animation] [--frames N]
+usage: run.py TRAJECTORY.json OUT_DIR [--no-animation] [--frames=N] [--snapshots=K]
+              [--format=png|pdf|svg]
 
-Writes OUT_DIR/run.png: the workspace, familiar obstacles (dark grey, black once localized),
-unknown obstacles (light grey), regions of interest, the objects at start (dashed, named in
-grey) and end (filled, named in white), and the robot's and objects' paths, with a legend and
-the formula wrapped under the title. Unless --no-animation, also OUT_DIR/run.gif: the
+Writes OUT_DIR/run.FORMAT (default png): axes in metres; the workspace, familiar obstacles (dark
+grey, black once localized), unknown obstacles (light grey), regions of interest, each object at
+its start (dashed circle) and end (filled, named), in its own colour, its path dashed and the
+stretches it was carried drawn solid; the robot's path, its end pose and its sensor range
+(dotted); every action numbered in the order it ended at the robot's position then (LTL actions
+in circles, Fix-mode actions in red squares); a legend of what is drawn and the formula under
+the title. With --snapshots=K, K panels side by side as the paper's Figs. 3-5: the run cut at
+action ends into K successive stretches, each panel the path of its stretch and the objects
+where they stood at its end. OUT_DIR/run_figure.json lists what was marked (number, action,
+Fix mode, time, position, panel), for tests and captions. Unless --no-animation, also OUT_DIR/run.gif: the
 same scene over time (at most N frames, default 200), familiar obstacles turning black when
 localized, with the current action (Fix-mode actions marked *); and, when the trajectory holds
 the spaces (`rearm run --spaces`), OUT_DIR/spaces.gif: the semantic, mapped and model spaces
@@ -65,7 +72,9 @@ def draw_static(ax, t, localized):
     ax.set_xlim(min(xs) - pad, max(xs) + pad)
     ax.set_ylim(min(ys) - pad, max(ys) + pad)
     ax.set_aspect("equal")
-    ax.set_axis_off()
+    ax.set_xlabel("x (m)", fontsize=8)
+    ax.set_ylabel("y (m)", fontsize=8)
+    ax.tick_params(labelsize=7)
     return patches
 
 
@@ -75,53 +84,144 @@ def title(t, status=True, width=95):
     return head + "\n" + "\n".join(textwrap.wrap(t["task"], width=width))
 
 
-def legend(ax, t):
+def legend(ax, t, fix_marked):
     items = [Line2D([], [], color=ROBOT, linewidth=1.2, label="robot path"),
              Line2D([], [], color=ROBOT, marker="o", linestyle="none", markersize=4,
                     label="robot start"),
-             Line2D([], [], color="grey", linewidth=1.0, linestyle="--", label="object paths"),
-             Line2D([], [], color="grey", marker="o", markerfacecolor="none", linestyle="none",
-                    markersize=9, label="object start"),
-             Line2D([], [], color="grey", marker="o", linestyle="none", markersize=9,
-                    label="object end")]
+             Line2D([], [], color=ROBOT, marker="o", markeredgecolor="black", linestyle="none",
+                    markersize=9, label="robot at the end"),
+             Line2D([], [], color=ROBOT, linestyle=":", linewidth=1.0,
+                    label=f"sensor range ({t['sensor_range']:g} m)")]
+    for i, o in enumerate(t["objects"][:len(OBJECT_COLORS)]):
+        c = OBJECT_COLORS[i % len(OBJECT_COLORS)]
+        items.append(Line2D([], [], color=c, marker="o", markersize=8, linewidth=2.0,
+                            label=f"{o['name']}: start (dashed), carried (solid), end"))
+    items.append(Line2D([], [], color="black", marker="o", markerfacecolor="white",
+                        linestyle="none", markersize=9, label="action n ended here"))
+    if fix_marked:
+        items.append(Line2D([], [], color="#b71c1c", marker="s", markerfacecolor="#ffcdd2",
+                            linestyle="none", markersize=9, label="Fix-mode action n"))
     if t["familiar"]:
         items.append(Patch(facecolor="black", label="familiar obstacle"))
     if t["unknown"]:
         items.append(Patch(facecolor=LIGHT_GREY, edgecolor="grey", label="unknown obstacle"))
     if t["regions"]:
         items.append(Patch(facecolor=REGION_COLORS[0], alpha=0.55, label="region of interest"))
-    ax.legend(handles=items, loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8,
+    ax.legend(handles=items, loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=7.5,
               frameon=False)
 
 
-def figure(t, out_dir):
-    fig, ax = plt.subplots(figsize=(10, 8 * aspect(t)))
-    draw_static(ax, t, lambda f: f["localized_at"] >= 0)
-    robot = t["robot"]
-    ax.plot([p[0] for p in robot], [p[1] for p in robot], color=ROBOT, linewidth=1.2,
-            label="robot")
+def sample(t, time):
+    """The trajectory's sample index at `time` (the samples are t['dt'] apart)."""
+    return max(0, min(len(t["robot"]) - 1, int(round(time / t["dt"]))))
+
+
+def panels_of(t, k):
+    """K successive stretches [i0, i1] of sample indices, cut at action ends as evenly as the
+    actions allow (every action ends in exactly one stretch)."""
+    n = len(t["robot"])
+    ends = sorted({sample(t, a["t_end"]) for a in t["actions"]})
+    k = max(1, min(k, len(ends))) if ends else 1
+    cuts = [ends[min(len(ends) - 1, math.ceil((j + 1) * len(ends) / k) - 1)] for j in range(k)]
+    cuts[-1] = n - 1
+    out, first = [], 0
+    for c in cuts:
+        if c >= first:
+            out.append((first, c))
+            first = c
+    return out
+
+
+def marked_actions(t, stretches):
+    """Every action, numbered in the order it ended, with where the robot was then and the
+    panel whose stretch holds that moment."""
+    order = sorted(range(len(t["actions"])), key=lambda i: (t["actions"][i]["t_end"], i))
+    out = []
+    for number, i in enumerate(order, start=1):
+        a = t["actions"][i]
+        k = sample(t, a["t_end"])
+        panel = next((p for p, (lo, hi) in enumerate(stretches) if lo <= k <= hi),
+                     len(stretches) - 1)
+        x, y = t["robot"][k][0], t["robot"][k][1]
+        out.append({"number": number, "action": a["action"], "fix_mode": a["fix_mode"],
+                    "outcome": a.get("outcome", ""), "t_end": a["t_end"], "x": x, "y": y,
+                    "panel": panel})
+    return out
+
+
+def draw_objects(ax, t, lo, hi):
     for i, (o, path) in enumerate(zip(t["objects"], t["object_paths"])):
         c = OBJECT_COLORS[i % len(OBJECT_COLORS)]
-        ax.plot([p[0] for p in path], [p[1] for p in path], color=c, linewidth=1.0,
-                linestyle="--")
+        seg = path[lo:hi + 1]
+        ax.plot([p[0] for p in seg], [p[1] for p in seg], color=c, linewidth=1.0, linestyle="--")
+        # Carried: the stretches where the object moves between samples.
+        for a, b in zip(seg, seg[1:]):
+            if math.dist(a, b) > 1e-6:
+                ax.plot([a[0], b[0]], [a[1], b[1]], color=c, linewidth=2.6, solid_capstyle="round")
         ax.add_patch(Circle(path[0], o["radius"], fill=False, edgecolor=c, linestyle="--"))
-        if math.dist(path[0], path[-1]) > 2 * o["radius"]:
-            ax.text(path[0][0], path[0][1] - 1.6 * o["radius"], o["name"], ha="center",
-                    va="top", fontsize=7, color="grey")
-        ax.add_patch(Circle(path[-1], o["radius"], facecolor=c, edgecolor=c, alpha=0.85))
-        ax.text(path[-1][0], path[-1][1], o["name"], ha="center", va="center", fontsize=8,
+        end = path[min(hi, len(path) - 1)]
+        ax.add_patch(Circle(end, o["radius"], facecolor=c, edgecolor=c, alpha=0.85))
+        ax.text(end[0], end[1], o["name"], ha="center", va="center", fontsize=7.5,
                 color="white", weight="bold")
-    x, y, psi = robot[-1]
+
+
+def draw_marks(ax, marks, panel):
+    for m in marks:
+        if m["panel"] != panel:
+            continue
+        if m["fix_mode"]:
+            box = dict(boxstyle="square,pad=0.2", facecolor="#ffcdd2", edgecolor="#b71c1c")
+        else:
+            box = dict(boxstyle="circle,pad=0.2", facecolor="white", edgecolor="black")
+        ax.text(m["x"], m["y"], str(m["number"]), ha="center", va="center", fontsize=6.5,
+                bbox=box, zorder=5)
+
+
+def draw_panel(ax, t, lo, hi, marks, panel):
+    draw_static(ax, t, lambda f: 0 <= f["localized_at"] <= hi * t["dt"])
+    robot = t["robot"][lo:hi + 1]
+    ax.plot([p[0] for p in robot], [p[1] for p in robot], color=ROBOT, linewidth=1.2)
+    draw_objects(ax, t, lo, hi)
+    x, y, psi = t["robot"][hi]
     r = t["robot_radius"]
     ax.add_patch(Circle((x, y), r, facecolor=ROBOT, edgecolor="black", alpha=0.9))
     ax.plot([x, x + r * math.cos(psi)], [y, y + r * math.sin(psi)], color="white")
+    ax.add_patch(Circle((x, y), t["sensor_range"], fill=False, edgecolor=ROBOT, linestyle=":",
+                        linewidth=1.0))
     ax.plot(robot[0][0], robot[0][1], marker="o", color=ROBOT, markersize=4)
-    ax.set_title(title(t), fontsize=9)
-    legend(ax, t)
+    draw_marks(ax, marks, panel)
+
+
+def figure(t, out_dir, fmt="png", snapshots=1):
+    stretches = panels_of(t, snapshots) if t["robot"] else [(0, 0)]
+    marks = marked_actions(t, stretches) if t["robot"] else []
+    k = len(stretches)
+    rows = 1 if k <= 3 else 2
+    cols = math.ceil(k / rows)
+    width = 10 if k == 1 else 5.0 * cols + 2.5
+    fig, axes = plt.subplots(rows, cols, squeeze=False,
+                             figsize=(width, rows * (8 if k == 1 else 4.6) * aspect(t) + 0.8))
+    for extra in range(k, rows * cols):
+        axes[extra // cols][extra % cols].set_visible(False)
+    for p, (lo, hi) in enumerate(stretches):
+        ax = axes[p // cols][p % cols]
+        if t["robot"]:
+            draw_panel(ax, t, lo, hi, marks, p)
+        else:
+            draw_static(ax, t, lambda f: False)
+        if k > 1:
+            ax.set_title(f"({chr(ord('a') + p)}) t = {lo * t['dt']:.0f}-{hi * t['dt']:.0f} s",
+                         fontsize=8)
+    fig.suptitle(title(t), fontsize=9)
+    legend(axes[0][cols - 1], t, any(m["fix_mode"] for m in marks))
     fig.tight_layout()
-    path = os.path.join(out_dir, "run.png")
+    path = os.path.join(out_dir, "run." + fmt)
     fig.savefig(path, dpi=150)
     plt.close(fig)
+    with open(os.path.join(out_dir, "run_figure.json"), "w") as f:
+        json.dump({"figure": os.path.basename(path), "snapshots": k,
+                   "panels": [[lo * t["dt"], hi * t["dt"]] for lo, hi in stretches],
+                   "actions": marks}, f, indent=1)
     print(f"wrote {path}")
 
 
@@ -289,16 +389,23 @@ def main(argv):
     if len(args) != 2:
         sys.stderr.write(__doc__)
         return 2
-    max_frames = 200
+    max_frames, snapshots, fmt = 200, 1, "png"
     for f in flags:
         if f.startswith("--frames="):
             max_frames = int(f.split("=", 1)[1])
+        elif f.startswith("--snapshots="):
+            snapshots = int(f.split("=", 1)[1])
+        elif f.startswith("--format="):
+            fmt = f.split("=", 1)[1]
         elif f != "--no-animation":
             sys.stderr.write(f"run.py: unknown option {f}\n")
             return 2
+    if fmt not in ("png", "pdf", "svg") or snapshots < 1 or max_frames < 1:
+        sys.stderr.write("run.py: --format is png, pdf or svg; --snapshots and --frames >= 1\n")
+        return 2
     t = load(args[0])
     os.makedirs(args[1], exist_ok=True)
-    figure(t, args[1])
+    figure(t, args[1], fmt, snapshots)
     if "--no-animation" not in flags and t["robot"]:
         animation(t, args[1], max_frames)
         if t.get("spaces"):

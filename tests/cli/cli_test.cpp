@@ -427,6 +427,17 @@ TEST(CliTest, RunWritesMetricsFigureAndAnimation) {
   const bool plots = have_python_modules("import matplotlib; import PIL");
   EXPECT_EQ(std::filesystem::exists(dir + "/run.png"), plots);
   EXPECT_EQ(std::filesystem::exists(dir + "/run.gif"), plots);
+  // --snapshots and --format reach the figure (run.py; its content: tests/plot/test_run_figure.py).
+  const Result svg =
+      run("run experiments/scenarios/fig3.yaml --no-animation --snapshots 2 "
+          "--format svg --out " +
+          dir + "/svg");
+  ASSERT_EQ(svg.code, 0) << svg.out;
+  EXPECT_EQ(std::filesystem::exists(dir + "/svg/run.svg"), plots);
+  if (plots) {
+    EXPECT_EQ(read_json(dir + "/svg/run_figure.json")["snapshots"], 2);
+  }
+  EXPECT_EQ(run("run experiments/scenarios/fig3.yaml --snapshots 0").code, 2);
   std::filesystem::remove_all(dir);
 }
 
