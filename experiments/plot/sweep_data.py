@@ -9,6 +9,7 @@ method list, so a new method (or an ablation variant) appears without a change h
 import csv
 import math
 import os
+import re
 import sys
 from collections import defaultdict
 
@@ -148,7 +149,11 @@ class Trial:
         # N and it), rounded. The column holds the achieved share, which differs from the sweep
         # file's by rounding, except for sealed goals: their pocket's blocker is an (N + 1)-th
         # object on a floor sized for N, so the column holds F (N + 1) / N.
-        self.footprint = nominal_footprint(number(r.get("footprint_density")), self.cls, self.n)
+        # The sweep's workspace rule names it ("footprint 0.01 (>= 10 m)": a room of at least
+        # 10 m holds less), else it is inferred from the achieved share.
+        rule = re.match(r"footprint ([0-9.eE+-]+)", r.get("workspace_rule", "") or "")
+        self.footprint = (round(float(rule.group(1)), FOOTPRINT_DIGITS) if rule else
+                          nominal_footprint(number(r.get("footprint_density")), self.cls, self.n))
         # Difficulty of the instance (experiments/sweeps/README.md): objects on a cycle of the
         # goal-on-start dependency graph, objects whose goal another object occupies, objects
         # walled in by other objects at the start.

@@ -167,6 +167,21 @@ class MethodOrderTest(unittest.TestCase):
         self.assertEqual([line.split(" | ")[0][2:] for line in section[2:]], self.order)
 
 
+class WorkspaceRuleFootprintTest(unittest.TestCase):
+    """The sweep's workspace rule names the footprint a row's room was sized for; a room held at
+    its minimum side (the scaling sweep's 10 m) holds less than that share."""
+
+    def test_rule_wins_over_the_achieved_share(self):
+        row = {"class": "random", "objects": "4", "footprint_density": "0.0019634954",
+               "workspace_rule": "footprint 0.01 (>= 10 m)"}
+        self.assertEqual(sweep_data.Trial(row).footprint, 0.01)
+        row = {"class": "sealed", "objects": "16", "footprint_density": "0.053125",
+               "workspace_rule": "footprint 0.05"}
+        self.assertEqual(sweep_data.Trial(row).footprint, 0.05)
+        row = {"class": "sealed", "objects": "16", "footprint_density": "0.053125"}
+        self.assertEqual(sweep_data.Trial(row).footprint, 0.05)  # inferred: F (N + 1) / N
+
+
 class CostTest(unittest.TestCase):
     """The report's cost section against hand sums: 3 trials of 600 s, 1,200 s and 1,800 s of
     wall time (1 h in all) and 360 s of CPU each, two methods, two cells."""
