@@ -197,6 +197,16 @@ int run_sweep_file(SweepArgs a) {
               plan.name.c_str(), s.ran, s.succeeded, s.errors, s.already_done,
               s.dropped_torn_line ? " (a cut last row was dropped and run again)" : "",
               experiment::format_duration(s.wall_s).c_str());
+  if (o.shard.count > 1) {
+    std::printf(
+        "next: once every shard has run, 'rearm sweep merge DIR... --out MERGED', then "
+        "'rearm sweep report MERGED'\n");
+  } else {
+    std::printf(
+        "next: 'rearm sweep report %s' (an interrupted run resumes with the same "
+        "command)\n",
+        o.out_dir.c_str());
+  }
   return s.errors > 0 ? kExitFailure : kExitOk;
 }
 

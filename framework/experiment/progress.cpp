@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace rearm::experiment {
@@ -20,20 +21,48 @@ std::string format_duration(double seconds) {
   return buf;
 }
 
-Progress::Progress(std::FILE* out, std::size_t total, std::string label, double percent_step)
+double estimate_remaining(const std::map<std::string, std::size_t>& left,
+                          const std::map<std::string, double>& done_seconds,
+                          const std::map<std::string, std::size_t>& done_count, int threads) {
+  double all_seconds = 0;
+  std::size_t all_count = 0;
+  for (const auto& [kind, n] : done_count) {
+    all_count += n;
+    all_seconds += done_seconds.at(kind);
+  }
+  if (all_count == 0) return NAN;
+  double work = 0;
+  for (const auto& [kind, n] : left) {
+    const auto c = done_count.find(kind);
+    const double mean = c != done_count.end() && c->second > 0
+                            ? done_seconds.at(kind) / static_cast<double>(c->second)
+                            : all_seconds / static_cast<double>(all_count);
+    work += mean * static_cast<double>(n);
+  }
+  return work / std::max(1, threads);
+}
+
+Progress::Progress(std::FILE* out, const std::vector<std::string>& kinds, std::string label,
+                   int threads, double percent_step)
     : out_(out),
-      total_(total),
+      total_(kinds.size()),
       label_(std::move(label)),
+      threads_(threads),
       step_(percent_step),
       terminal_(out != nullptr && ::isatty(fileno(out)) != 0),
       start_(std::chrono::steady_clock::now()),
-      next_percent_(percent_step) {}
+      next_percent_(percent_step) {
+  for (const std::string& k : kinds) ++left_[k];
+}
 
-void Progress::tick(bool success, bool error) {
+void Progress::tick(const std::string& kind, double seconds, bool success, bool error) {
   const std::lock_guard<std::mutex> lock(mutex_);
   ++done_;
   if (!success) ++failures_;
   if (error) ++errors_;
+  if (auto it = left_.find(kind); it != left_.end() && it->second > 0) --it->second;
+  ++done_count_[kind];
+  done_seconds_[kind] += seconds;
   const double percent = total_ == 0 ? 100 : 100.0 * static_cast<double>(done_) / total_;
   if (terminal_) {
     print(false);
@@ -52,8 +81,7 @@ void Progress::print(bool final_line) {
   if (out_ == nullptr) return;
   const double elapsed =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-  const double eta =
-      done_ == 0 ? NAN : elapsed / static_cast<double>(done_) * static_cast<double>(total_ - done_);
+  const double eta = estimate_remaining(left_, done_seconds_, done_count_, threads_);
   const double percent = total_ == 0 ? 100 : 100.0 * static_cast<double>(done_) / total_;
   std::fprintf(out_, "%s%s: %zu/%zu trials (%.0f%%), %zu failed, %zu errors, %s elapsed%s%s",
                terminal_ ? "\r" : "", label_.c_str(), done_, total_, percent, failures_, errors_,

@@ -172,7 +172,9 @@ SweepSummary run_sweep(const SweepPlan& plan, const MethodRegistry& methods,
 
   const Provenance provenance = this_process();
   std::vector<Generated> generated(plan.instances.size());
-  Progress progress(o.progress, todo.size(), "sweep " + plan.name);
+  std::vector<std::string> kinds;
+  for (const TrialJob* t : todo) kinds.push_back(t->settings.method);
+  Progress progress(o.progress, kinds, "sweep " + plan.name, o.threads);
   std::atomic<std::size_t> succeeded{0}, errors{0};
   tbb::task_arena arena(o.threads);
   arena.execute([&] {
@@ -184,14 +186,17 @@ SweepSummary run_sweep(const SweepPlan& plan, const MethodRegistry& methods,
         [&](const tbb::blocked_range<std::size_t>& range) {
           for (std::size_t k = range.begin(); k != range.end(); ++k) {
             const TrialJob& t = *todo[k];
+            const auto t0 = std::chrono::steady_clock::now();
             const TrialRecord r =
                 run_one(plan, t, generated[t.instance], methods, provenance, o.checked);
+            const double seconds =
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
             log.append(trial_row(r));
             const bool ok = is_success(r.outcome);
             const bool error = r.outcome.status == TrialStatus::kError;
             if (ok) ++succeeded;
             if (error) ++errors;
-            progress.tick(ok, error);
+            progress.tick(kinds[k], seconds, ok, error);
           }
         },
         tbb::simple_partitioner());
