@@ -2,10 +2,18 @@
 success rate against N, a line per method, every other dimension of the sweep (target density,
 footprint, unknown-obstacle mix) pooled, and the Wilson 95% interval as a shaded band. They
 answer "does rearm beat the sampling planners as N grows?" without reading twelve panels; the
-report's table keeps every cell apart.
+report's table keeps every cell apart. And time_equal_terms.png: per class, the median over the
+solved trials of what a trial cost to carry the task out (a baseline's planning plus its
+execution in Box2D; rearm's whole online compute) against N, with the baselines' offline
+planning alone dashed beside it: the usual time figure sets rearm's whole run against the
+baselines' planning only. (A time to the first action is not in trials.csv: for a baseline it
+is its planning time.)
 """
+import statistics
+
 from sweep_data import Cell
-from sweep_figures import draw_method, finish, legend_handles, method_color, n_axis, suptitle
+from sweep_figures import (class_row, draw_method, finish, legend_handles, method_color,
+                           n_axis, suptitle)
 
 import matplotlib.pyplot as plt  # noqa: E402  (sweep_figures selected the Agg backend)
 
@@ -14,10 +22,16 @@ def file_name(cls):
     return "answer_%s.png" % cls
 
 
+EQUAL_TERMS = "time_equal_terms.png"
+
+
 def figures(s):
-    """(file name, caption) of each figure, one per goal class of the sweep."""
+    """(file name, caption) of each figure: one per goal class, then the time on equal terms."""
     return [(file_name(c), "%s goals: success rate vs N per method, every other dimension "
-                           "pooled, Wilson 95%% band" % c) for c in s.classes]
+                           "pooled, Wilson 95%% band" % c) for c in s.classes] + [
+        (EQUAL_TERMS, "median time of the solved trials vs N on equal terms: planning and "
+                      "execution (baselines) or online compute (rearm), solid; the baselines' "
+                      "offline planning alone, dashed; log axis")]
 
 
 def points(s, cls, method):
@@ -58,7 +72,50 @@ def plot_class(s, methods, cls, path):
     finish(s, fig, path)
 
 
+def medians(s, cls, method, attr):
+    """(N, median of attr over the solved trials) where there is one."""
+    out = []
+    for n in s.ns:
+        xs = [getattr(t, attr) for t in s.trials if t.cls == cls and t.method == method
+              and t.n == n and t.success and getattr(t, attr) is not None]
+        if xs:
+            out.append((n, max(statistics.median(xs), 1e-5)))
+    return out
+
+
+def plot_equal_terms(s, methods, path):
+    fig, axes = class_row(s, "Time of the solved trials vs N on equal terms (median): solid, "
+                             "planning + execution (baselines) or online compute (rearm); "
+                             "dashed, the baselines' offline planning alone")
+    lines, ys = {}, []
+    for ax, cls in zip(axes[0], s.classes):
+        for m in methods:
+            pts = medians(s, cls, m, "total")
+            if pts:
+                lines.setdefault(m, draw_method(ax, m, methods, [n for n, _ in pts],
+                                                [y for _, y in pts], None))
+            plan = medians(s, cls, m, "planning")
+            if plan:
+                ax.plot([n for n, _ in plan], [y for _, y in plan], linestyle="--",
+                        linewidth=1.0, color=method_color(m, methods))
+            ys += [y for _, y in pts + plan]
+        ax.set_title("%s goals" % cls, fontsize=9.5)
+        ax.set_xlabel("objects N", fontsize=9)
+        ax.grid(True, which="both", alpha=0.3)
+        n_axis(ax, s)
+    if ys:
+        for ax in axes[0]:
+            ax.set_yscale("log")
+            ax.set_ylim(min(ys) / 1.6, max(ys) * 1.6)
+    axes[0][0].set_ylabel("time (s)", fontsize=9)
+    handles = legend_handles(methods, lines)
+    axes[0][-1].legend(handles, [h.get_label() for h in handles], loc="center left",
+                       bbox_to_anchor=(1.02, 0.5), fontsize=8, frameon=False)
+    finish(s, fig, path)
+
+
 def write_figures(s, methods, path_of):
     """Every figure of figures(s); path_of(file name) gives where it goes."""
     for cls in s.classes:
         plot_class(s, methods, cls, path_of(file_name(cls)))
+    plot_equal_terms(s, methods, path_of(EQUAL_TERMS))

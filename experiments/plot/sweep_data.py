@@ -131,6 +131,12 @@ class Trial:
         # The time of a trial: planning time for the offline baselines, compute time otherwise.
         planning = number(r.get("planning_time_s"))
         self.time = planning if planning is not None else number(r.get("compute_time_s"))
+        # On equal terms (answer_figures.py): what a trial cost to carry the task out, planning
+        # and execution in Box2D for a baseline (its wall time), the online compute for rearm;
+        # and the offline planning alone (None for rearm, which plans as it goes).
+        self.planning = planning
+        self.total = (number(r.get("wall_time_s")) if planning is not None else
+                      number(r.get("compute_time_s")))
         self.time_limit = number(r.get("time_limit_s"))
         # What the trial cost: its wall time on one worker thread, and the process CPU time.
         self.wall_time = number(r.get("wall_time_s"))

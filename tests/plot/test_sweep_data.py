@@ -182,6 +182,19 @@ class WorkspaceRuleFootprintTest(unittest.TestCase):
         self.assertEqual(sweep_data.Trial(row).footprint, 0.05)  # inferred: F (N + 1) / N
 
 
+class EqualTermsTimeTest(unittest.TestCase):
+    """A baseline's time on equal terms is its wall time (planning and execution in Box2D), its
+    planning kept apart; rearm's is its online compute, with no offline planning."""
+
+    def test_baseline_and_rearm_rows(self):
+        base = sweep_data.Trial({"method": "birrt", "planning_time_s": "0.5",
+                                 "compute_time_s": "0.5", "wall_time_s": "2.0"})
+        self.assertEqual((base.total, base.planning, base.time), (2.0, 0.5, 0.5))
+        rearm = sweep_data.Trial({"method": "rearm", "planning_time_s": "",
+                                  "compute_time_s": "1.5", "wall_time_s": "30"})
+        self.assertEqual((rearm.total, rearm.planning, rearm.time), (1.5, None, 1.5))
+
+
 class CostTest(unittest.TestCase):
     """The report's cost section against hand sums: 3 trials of 600 s, 1,200 s and 1,800 s of
     wall time (1 h in all) and 360 s of CPU each, two methods, two cells."""

@@ -58,9 +58,9 @@ class EntryPointTest(unittest.TestCase):
             run = subprocess.run([sys.executable, os.path.join(PLOT_DIR, "sweep.py"), d],
                                  capture_output=True, text=True)
             self.assertEqual(run.returncode, 0, run.stderr)
-            self.assertIn("report.md and 8 figures (24 trials)", run.stdout)
-            for name in [n for n, _ in sweep_figures.FIGURES] + ["answer_random.png",
-                                                                  "answer_sealed.png"]:
+            self.assertIn("report.md and 9 figures (24 trials)", run.stdout)
+            for name in [n for n, _ in sweep_figures.FIGURES] + [
+                    "answer_random.png", "answer_sealed.png", "time_equal_terms.png"]:
                 self.assertGreater(os.path.getsize(os.path.join(d, name)), 0, name)
             with open(os.path.join(d, "report.md")) as f:
                 report = f.read()
@@ -78,7 +78,7 @@ class EntryPointTest(unittest.TestCase):
         self.assertEqual([(n, c.k, c.n) for n, c in pts], [(2, 3, 4)])
         self.assertEqual(answer_figures.points(s, "sealed", "rearm"), [])
         self.assertEqual([f for f, _ in answer_figures.figures(s)],
-                         ["answer_random.png", "answer_sealed.png"])
+                         ["answer_random.png", "answer_sealed.png", "time_equal_terms.png"])
 
     def test_usage(self):
         script = os.path.join(PLOT_DIR, "sweep.py")
@@ -135,15 +135,16 @@ class CrowdedFiguresTest(unittest.TestCase):
             run = subprocess.run([sys.executable, os.path.join(PLOT_DIR, "sweep.py"), d],
                                  capture_output=True, text=True)
             self.assertEqual(run.returncode, 0, run.stderr)
-            # 6 of every sweep, 1 answer figure (random goals only), 3 crowded ones.
-            self.assertIn("report.md and 10 figures (32 trials)", run.stdout)
+            # 6 of every sweep, 1 answer figure (random goals only), the time on equal terms, 3
+            # crowded ones.
+            self.assertIn("report.md and 11 figures (32 trials)", run.stdout)
             for name, _ in crowded_figures.FIGURES:
                 self.assertGreater(os.path.getsize(os.path.join(d, name)), 0, name)
         with tempfile.TemporaryDirectory() as d:
             write_sweep(d)  # no footprint column
             run = subprocess.run([sys.executable, os.path.join(PLOT_DIR, "sweep.py"), d],
                                  capture_output=True, text=True)
-            self.assertIn("report.md and 8 figures", run.stdout)
+            self.assertIn("report.md and 9 figures", run.stdout)
             for name, _ in crowded_figures.FIGURES:
                 self.assertFalse(os.path.exists(os.path.join(d, name)), name)
 
