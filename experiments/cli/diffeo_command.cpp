@@ -110,16 +110,6 @@ Scene scene_of(const scenario::Scenario& s) {
   return c;
 }
 
-// "X,Y" as a finite point, or nullopt when the text is not two numbers.
-std::optional<Point> point_of(const std::string& text) {
-  const std::size_t comma = text.find(',');
-  if (comma == std::string::npos || text.find(',', comma + 1) != std::string::npos) {
-    return std::nullopt;
-  }
-  return Point(parse_number("--goal", text.substr(0, comma)),
-               parse_number("--goal", text.substr(comma + 1)));
-}
-
 // The point of region r in the start's freespace component nearest its centroid, on a grid of
 // kGoalGrid (the centroid itself when free), or nullopt when none is.
 std::optional<Point> free_point(const Polygon& r, const reactive::MappedSpace& m) {
@@ -153,7 +143,7 @@ Point goal_of(const scenario::Scenario& s, const std::string& arg, const reactiv
         "no region has a point in the robot's freespace component; give the goal "
         "with --goal X,Y");
   }
-  if (const auto p = point_of(arg)) return *p;
+  if (const auto p = parse_point("--goal", arg)) return *p;
   throw Error("--goal: '" + arg + "' is neither a region of the scenario nor a point X,Y");
 }
 

@@ -89,4 +89,13 @@ double parse_number(const std::string& flag, const std::string& v) {
   return x;
 }
 
+std::optional<geometry::Point> parse_point(const std::string& flag, const std::string& text) {
+  const std::size_t comma = text.find(',');
+  if (comma == std::string::npos || text.find(',', comma + 1) != std::string::npos) {
+    return std::nullopt;
+  }
+  return geometry::Point(parse_number(flag, text.substr(0, comma)),
+                         parse_number(flag, text.substr(comma + 1)));
+}
+
 }  // namespace rearm::cli

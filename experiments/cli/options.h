@@ -4,7 +4,10 @@
 
 #include <CLI/CLI.hpp>
 #include <cstdint>
+#include <optional>
 #include <string>
+
+#include "geometry/polygon.h"
 
 namespace rearm::cli {
 
@@ -32,5 +35,8 @@ void add_plot_flags(CLI::App& command, bool& no_plot, bool& no_animation);
 // A finite decimal number, or rearm::Error naming flag (for values inside a larger option,
 // such as diffeo's --goal X,Y).
 double parse_number(const std::string& flag, const std::string& v);
+// "X,Y" as a finite point (parse_number's checks, naming flag), or nullopt when the text is not
+// two comma-separated fields (a name, for the options that take a region's name or a point).
+std::optional<geometry::Point> parse_point(const std::string& flag, const std::string& text);
 
 }  // namespace rearm::cli

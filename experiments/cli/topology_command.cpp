@@ -11,7 +11,6 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
-#include <regex>
 #include <string>
 #include <vector>
 
@@ -20,8 +19,11 @@
 #include "core/file_io.h"
 #include "core/suggest.h"
 #include "core/text.h"
+#include "ltl/formula.h"
+#include "ltl/parser.h"
 #include "options.h"
 #include "scenario/scenario_io.h"
+#include "symbolic/action.h"
 #include "topology/topology_check.h"
 
 namespace rearm::cli {
@@ -76,12 +78,15 @@ std::vector<std::string> region_names(const scenario::Scenario& s) {
   return out;
 }
 
-// The region of the task's first move(l) or release(M,l), or "" when it has none.
+// The region of the task's first move(l) or release(M,l) (its propositions left to right), or
+// "" when it has none.
 std::string first_task_region(const std::string& task) {
-  static const std::regex action(
-      R"((move|release)\s*\(\s*(?:[A-Za-z_][A-Za-z0-9_]*\s*,\s*)?([A-Za-z_][A-Za-z0-9_]*)\s*\))");
-  std::smatch m;
-  return std::regex_search(task, m, action) ? m[2].str() : "";
+  for (const std::string& p : ltl::parse(task).atomic_propositions()) {
+    if (!ltl::is_action_predicate(p)) continue;
+    const symbolic::Action action = symbolic::Action::parse(p);
+    if (!action.region.empty()) return action.region;
+  }
+  return "";
 }
 
 // x* of --to (a region's centroid or X,Y), or of the task's first region.
@@ -93,10 +98,8 @@ void resolve_target(const scenario::Scenario& s, const std::string& to, Setup& u
     u.target_text = "the centroid of " + name;
     return;
   }
-  const std::size_t comma = to.find(',');
-  if (!to.empty() && comma != std::string::npos && to.find(',', comma + 1) == std::string::npos) {
-    u.target = Point(parse_number("--to", to.substr(0, comma)),
-                     parse_number("--to", to.substr(comma + 1)));
+  if (const std::optional<Point> p = parse_point("--to", to)) {
+    u.target = *p;
     u.target_text = "the point";
     return;
   }
@@ -182,6 +185,10 @@ std::vector<std::string> blocking_names(const Setup& u, const topology::Topology
   return out;
 }
 
+double least(const std::vector<double>& v) {
+  return v.empty() ? 0 : *std::min_element(v.begin(), v.end());
+}
+
 double median(std::vector<double> v) {
   if (v.empty()) return 0;
   std::sort(v.begin(), v.end());
@@ -191,7 +198,6 @@ double median(std::vector<double> v) {
 
 Json report_json(const scenario::Scenario& s, const TopologyArgs& a, const Setup& u,
                  const Measured& m) {
-  const double least = m.warm.empty() ? 0 : *std::min_element(m.warm.begin(), m.warm.end());
   return Json{{"scenario", s.name},
               {"x", {u.x.x(), u.x.y()}},
               {"target", {u.target.x(), u.target.y()}},
@@ -206,7 +212,7 @@ Json report_json(const scenario::Scenario& s, const TopologyArgs& a, const Setup
               {"check_cold_s", m.check_cold},
               {"make_input_warm_s", m.input_warm},
               {"check_warm_median_s", median(m.warm)},
-              {"check_warm_min_s", least},
+              {"check_warm_min_s", least(m.warm)},
               {"repeat", a.repeat}};
 }
 
@@ -220,14 +226,13 @@ void print_report(const scenario::Scenario& s, const TopologyArgs& a, const Setu
   for (const std::string& b : blocking_names(u, m.result)) {
     blocking += (blocking.empty() ? "; blocking objects (the first moved first): " : ", ") + b;
   }
-  const double least = m.warm.empty() ? 0 : *std::min_element(m.warm.begin(), m.warm.end());
   std::printf("%s\nverdict: %s%s\nreason: %s\n", head.c_str(), verdict_text(m.result.verdict),
               blocking.c_str(), m.result.reason.c_str());
   std::printf(
       "make_input: %s cold, %s warm; check_topology: %s cold, %s warm (median of %d, "
       "least %s)\n",
       ms(m.input_cold).c_str(), ms(m.input_warm).c_str(), ms(m.check_cold).c_str(),
-      ms(median(m.warm)).c_str(), a.repeat, ms(least).c_str());
+      ms(median(m.warm)).c_str(), a.repeat, ms(least(m.warm)).c_str());
 }
 
 int topology_run(const TopologyArgs& a) {

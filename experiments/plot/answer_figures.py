@@ -11,7 +11,7 @@ is its planning time.)
 """
 import statistics
 
-from sweep_data import Cell
+from sweep_data import pooled
 from sweep_figures import (class_row, draw_method, finish, legend_handles, method_color,
                            n_axis, suptitle)
 
@@ -36,12 +36,8 @@ def figures(s):
 
 def points(s, cls, method):
     """(N, Cell) of the method's trials of class cls, one per N with trials."""
-    out = []
-    for n in s.ns:
-        c = Cell([t for t in s.trials if t.cls == cls and t.method == method and t.n == n])
-        if c.n > 0:
-            out.append((n, c))
-    return out
+    cells = [(n, pooled(s, method, cls=cls, n=n)) for n in s.ns]
+    return [(n, c) for n, c in cells if c.n > 0]
 
 
 def plot_class(s, methods, cls, path):
@@ -76,8 +72,8 @@ def medians(s, cls, method, attr):
     """(N, median of attr over the solved trials) where there is one."""
     out = []
     for n in s.ns:
-        xs = [getattr(t, attr) for t in s.trials if t.cls == cls and t.method == method
-              and t.n == n and t.success and getattr(t, attr) is not None]
+        xs = [getattr(t, attr) for t in pooled(s, method, cls=cls, n=n).trials
+              if t.success and getattr(t, attr) is not None]
         if xs:
             out.append((n, max(statistics.median(xs), 1e-5)))
     return out

@@ -6,7 +6,7 @@ densities are pooled in all three (the report's table keeps every cell apart).
 """
 import math
 
-from sweep_data import DIFFICULTY_COLUMNS, Cell
+from sweep_data import DIFFICULTY_COLUMNS, Cell, pooled
 from sweep_figures import (TIME_FLOOR_S, bars, draw_method, finish, legend_handles, log_axis,
                            n_axis, offsets, suptitle)
 
@@ -38,12 +38,6 @@ def panels(title, count):
                              squeeze=False, sharey=True)
     suptitle(fig, title)
     return fig, axes[0]
-
-
-def pooled(s, method, **match):
-    """The Cell of a method's trials whose fields equal `match` (footprint, n)."""
-    return Cell([t for t in s.trials if t.method == method
-                 and all(getattr(t, k) == v for k, v in match.items())])
 
 
 def draw_rates(ax, methods, m, points, handles, off):

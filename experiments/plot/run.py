@@ -154,10 +154,15 @@ def draw_objects(ax, t, lo, hi):
         c = OBJECT_COLORS[i % len(OBJECT_COLORS)]
         seg = path[lo:hi + 1]
         ax.plot([p[0] for p in seg], [p[1] for p in seg], color=c, linewidth=1.0, linestyle="--")
-        # Carried: the stretches where the object moves between samples.
+        # Carried: the stretches where the object moves between samples, one line broken (NaN)
+        # where it stands still.
+        xs, ys = [], []
         for a, b in zip(seg, seg[1:]):
             if math.dist(a, b) > 1e-6:
-                ax.plot([a[0], b[0]], [a[1], b[1]], color=c, linewidth=2.6, solid_capstyle="round")
+                xs += [a[0], b[0], math.nan]
+                ys += [a[1], b[1], math.nan]
+        if xs:
+            ax.plot(xs, ys, color=c, linewidth=2.6, solid_capstyle="round")
         ax.add_patch(Circle(path[0], o["radius"], fill=False, edgecolor=c, linestyle="--"))
         end = path[min(hi, len(path) - 1)]
         ax.add_patch(Circle(end, o["radius"], facecolor=c, edgecolor=c, alpha=0.85))

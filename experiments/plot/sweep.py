@@ -67,8 +67,7 @@ def main(argv):
         order = sweep_figures.presentation_order(s.methods)
         answer_figures.write_figures(s, order, lambda name: os.path.join(out, name))
         sweep_figures.write_figures(s, out)
-        crowded_figures.write_figures(s, sweep_figures.presentation_order(s.methods),
-                                      lambda name: os.path.join(out, name))
+        crowded_figures.write_figures(s, order, lambda name: os.path.join(out, name))
         print("wrote %s/report.md and %d figures (%d trials)" % (out, len(figures), len(s.trials)))
     else:
         print("wrote %s/report.md (no trials: no figures)" % out)

@@ -283,6 +283,13 @@ def sort_numbers(values):
 # ----------------------------------------------------------------------------- the data set
 
 
+
+def pooled(s, method, **match):
+    """The Cell of a method's trials in sweep s whose fields equal `match` (e.g. cls, n,
+    footprint), every other dimension pooled."""
+    return Cell([t for t in s.trials if t.method == method
+                 and all(getattr(t, k) == v for k, v in match.items())])
+
 class Sweep:
     """The trials of one sweep folder, its settings and its cells."""
 

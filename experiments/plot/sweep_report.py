@@ -6,7 +6,7 @@ standard library is used.
 import math
 from collections import Counter
 
-from sweep_data import density_bins, density_cells, ordered
+from sweep_data import density_bins, density_cells, ordered, pooled
 
 # The statuses in the order of a trial's life; a status not listed still gets a column, after.
 STATUS_ORDER = ["completed", "infeasible", "stuck", "timeout", "unsolved", "invalid_plan",
@@ -152,7 +152,7 @@ def cost_lines(s):
              (hours(cpu), hours(wall)), ""]
     lines += md_head(["method", "trials", "one thread", "CPU"])
     for m in s.methods:
-        ts = [t for t in s.trials if t.method == m]
+        ts = pooled(s, m).trials
         lines.append(md_row([m, str(len(ts)), hours(sum(t.wall_time or 0 for t in ts)),
                              hours(sum(t.cpu_time or 0 for t in ts))]))
     per = {}

@@ -184,8 +184,10 @@ std::optional<Point> drop_point(const Context& c, ActionState& a, const geometry
   // Points near a drop point a fragment took before are skipped: fragments are what the sensor
   // sees now, so a point can look clear from one side and not from another.
   const std::string carried = c.map.carried().value_or("");
-  const std::vector<RegionOfInterest> targets = regions_of_ways(c, rho);
-  bool in_region = false;  // the second search: goal regions allowed, but those of the ways
+  // The second search's regions (goal regions allowed, but those of the ways); empty in the
+  // first, which keeps clear of every region.
+  std::vector<RegionOfInterest> targets;
+  bool in_region = false;
   auto accept = [&](const Point& q, std::size_t k) {
     for (const Point& x : a.drop.rejected) {
       if ((q - x).norm() < kRejectedDropRadius * unit) return false;
@@ -201,6 +203,7 @@ std::optional<Point> drop_point(const Context& c, ActionState& a, const geometry
   };
   auto q = nearest_clear_point(where, center, raster_need, accept, c.p.guide, true);
   if (!q && !c.fix_ways.empty()) {
+    targets = regions_of_ways(c, rho);
     in_region = true;
     q = nearest_clear_point(where, center, raster_need, accept, c.p.guide, true);
   }

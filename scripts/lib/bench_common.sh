@@ -69,12 +69,13 @@ bench_prepare() {
   fi
   if [ -n "${BENCH_PROGRAM:-}" ]; then
     echo "bench: BENCH_PROGRAM=$BENCH_PROGRAM replaces the benchmark programs; nothing is built"
-  elif grep -qs '^REARM_BUILD_BENCH:BOOL=ON' "$BUILD/CMakeCache.txt"; then
-    echo "bench: $BUILD is configured with the benchmarks; set-up skipped"
-    cmake --build "$BUILD" --target "$@" -j"$(nproc)"
   else
-    bash scripts/setup.sh
-    cmake -S . -B "$BUILD" -DCMAKE_BUILD_TYPE=Release -DREARM_SANITIZE=OFF -DREARM_BUILD_BENCH=ON
+    if grep -qs '^REARM_BUILD_BENCH:BOOL=ON' "$BUILD/CMakeCache.txt"; then
+      echo "bench: $BUILD is configured with the benchmarks; set-up skipped"
+    else
+      bash scripts/setup.sh
+      cmake -S . -B "$BUILD" -DCMAKE_BUILD_TYPE=Release -DREARM_SANITIZE=OFF -DREARM_BUILD_BENCH=ON
+    fi
     cmake --build "$BUILD" --target "$@" -j"$(nproc)"
   fi
   OUT=$(mktemp -d)
