@@ -64,6 +64,7 @@ class BaselineMethod final : public experiment::Method {
     out.goals_reached = r.executed && experiment::goals_reached(s, e.objects_end);
     out.plans_offline = true;
     out.compute.planning_s = r.planning_time_s;
+    out.first_action_s = r.first_action_time_s;
     out.wall_time_s = r.wall_time_s;
     out.sim_time_s = e.sim_time;
     out.robot_path_m = e.robot_path_length;

@@ -12,6 +12,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -59,6 +60,10 @@ struct BaselineRecord {
   ExecutionLog execution;
   int replans = 0;
   double planning_time_s = 0;  // summed over replans
+  // The planning time before the robot's first act: a valid plan is complete (the replanning
+  // variant: its first one). NaN when no plan was executed (rearm's counterpart:
+  // executive::TaskResult::first_action_time).
+  double first_action_time_s = std::numeric_limits<double>::quiet_NaN();
   long subqueries = 0, nodes = 0, arrangement_nodes = 0, queries = 0;
   double wall_time_s = 0;  // planning + validation + execution
 };
@@ -71,7 +76,7 @@ BaselineRecord run_baseline(const scenario::Scenario& s, const BaselineOptions& 
 // time_limit_s, planning_time_s, subqueries, nodes, arrangement_nodes, replans, plan_moves
 // (the last plan's), moves_executed,
 // violations. Identical bytes for identical runs apart from the timing fields (wall_time_s,
-// controller_time_s, planning_time_s, real_time_factor).
+// controller_time_s, first_action_time_s, planning_time_s, real_time_factor).
 std::string baseline_metrics_json(const scenario::Scenario& s, const BaselineRecord& r);
 // trajectory.json in the format of experiment::trajectory_json (experiments/plot/run.py draws
 // it); familiar obstacles count as localized from the start (the map is given offline).

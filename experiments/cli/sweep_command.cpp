@@ -197,6 +197,10 @@ int run_sweep_file(SweepArgs a) {
               plan.name.c_str(), s.ran, s.succeeded, s.errors, s.already_done,
               s.dropped_torn_line ? " (a cut last row was dropped and run again)" : "",
               experiment::format_duration(s.wall_s).c_str());
+  for (const std::string& column : s.added_columns) {
+    std::printf("%s: written by an earlier version; its earlier rows leave %s empty\n",
+                (fs::path(o.out_dir) / experiment::kTrialsCsv).string().c_str(), column.c_str());
+  }
   if (o.shard.count > 1) {
     std::printf(
         "next: once every shard has run, 'rearm sweep merge DIR... --out MERGED', then "

@@ -4,10 +4,12 @@ footprint, unknown-obstacle mix) pooled, and the Wilson 95% interval as a shaded
 answer "does rearm beat the sampling planners as N grows?" without reading twelve panels; the
 report's table keeps every cell apart. And time_equal_terms.png: per class, the median over the
 solved trials of what a trial cost to carry the task out (a baseline's planning plus its
-execution in Box2D; rearm's whole online compute) against N, with the baselines' offline
-planning alone dashed beside it: the usual time figure sets rearm's whole run against the
-baselines' planning only. (A time to the first action is not in trials.csv: for a baseline it
-is its planning time.)
+execution in Box2D; rearm's whole online compute) against N, solid; the baselines' offline
+planning alone, dashed; and each method's time to a first action (the compute before its
+first motion or grip: a planner's planning until its plan is complete, rearm's mission set-up
+and control steps until its first command), dotted. The usual time figure sets rearm's whole
+run against the baselines' planning only. A trial log written before first_action_time_s
+existed has no dotted lines, and the title says so.
 """
 import statistics
 
@@ -16,6 +18,7 @@ from sweep_figures import (class_row, draw_method, finish, legend_handles, metho
                            n_axis, suptitle)
 
 import matplotlib.pyplot as plt  # noqa: E402  (sweep_figures selected the Agg backend)
+from matplotlib.lines import Line2D  # noqa: E402
 
 
 def file_name(cls):
@@ -31,7 +34,8 @@ def figures(s):
                            "pooled, Wilson 95%% band" % c) for c in s.classes] + [
         (EQUAL_TERMS, "median time of the solved trials vs N on equal terms: planning and "
                       "execution (baselines) or online compute (rearm), solid; the baselines' "
-                      "offline planning alone, dashed; log axis")]
+                      "offline planning alone, dashed; the time to a first action, dotted; "
+                      "log axis")]
 
 
 def points(s, cls, method):
@@ -79,22 +83,39 @@ def medians(s, cls, method, attr):
     return out
 
 
+# Line styles of time_equal_terms.png: (attribute of sweep_data.Trial, style, legend text).
+EQUAL_TERMS_LINES = [
+    ("total", "-", "carrying the task out: planning + execution, or online compute"),
+    ("planning", "--", "offline planning alone (baselines)"),
+    ("first_action", ":", "time to a first action"),
+]
+
+
+def equal_terms_title(s):
+    title = ("Time of the solved trials vs N on equal terms (median): solid, planning + "
+             "execution (baselines) or online compute (rearm); dashed, the baselines' offline "
+             "planning alone; dotted, the time to a first action")
+    if all(t.first_action is None for t in s.trials):
+        title += ("\n(no time to a first action in these rows: their trial log predates the "
+                  "first_action_time_s column)")
+    return title
+
+
 def plot_equal_terms(s, methods, path):
-    fig, axes = class_row(s, "Time of the solved trials vs N on equal terms (median): solid, "
-                             "planning + execution (baselines) or online compute (rearm); "
-                             "dashed, the baselines' offline planning alone")
+    fig, axes = class_row(s, equal_terms_title(s))
     lines, ys = {}, []
     for ax, cls in zip(axes[0], s.classes):
         for m in methods:
-            pts = medians(s, cls, m, "total")
-            if pts:
-                lines.setdefault(m, draw_method(ax, m, methods, [n for n, _ in pts],
-                                                [y for _, y in pts], None))
-            plan = medians(s, cls, m, "planning")
-            if plan:
-                ax.plot([n for n, _ in plan], [y for _, y in plan], linestyle="--",
-                        linewidth=1.0, color=method_color(m, methods))
-            ys += [y for _, y in pts + plan]
+            for attr, style, _ in EQUAL_TERMS_LINES:
+                pts = medians(s, cls, m, attr)
+                if not pts:
+                    continue
+                xy = ([n for n, _ in pts], [y for _, y in pts])
+                if style == "-":
+                    lines.setdefault(m, draw_method(ax, m, methods, *xy, None))
+                else:
+                    ax.plot(*xy, linestyle=style, linewidth=1.1, color=method_color(m, methods))
+                ys += xy[1]
         ax.set_title("%s goals" % cls, fontsize=9.5)
         ax.set_xlabel("objects N", fontsize=9)
         ax.grid(True, which="both", alpha=0.3)
@@ -104,7 +125,9 @@ def plot_equal_terms(s, methods, path):
             ax.set_yscale("log")
             ax.set_ylim(min(ys) / 1.6, max(ys) * 1.6)
     axes[0][0].set_ylabel("time (s)", fontsize=9)
-    handles = legend_handles(methods, lines)
+    handles = legend_handles(methods, lines) + [
+        Line2D([], [], color="0.3", linestyle=style, label=text)
+        for _, style, text in EQUAL_TERMS_LINES]
     axes[0][-1].legend(handles, [h.get_label() for h in handles], loc="center left",
                        bbox_to_anchor=(1.02, 0.5), fontsize=8, frameon=False)
     finish(s, fig, path)

@@ -137,6 +137,10 @@ class Trial:
         self.planning = planning
         self.total = (number(r.get("wall_time_s")) if planning is not None else
                       number(r.get("compute_time_s")))
+        # The compute before the first act (first_action_time_s): a baseline's planning until
+        # its first plan was complete, rearm's set-up and control until its first command. None
+        # where the trial never acted or the log predates the column.
+        self.first_action = number(r.get("first_action_time_s"))
         self.time_limit = number(r.get("time_limit_s"))
         # What the trial cost: its wall time on one worker thread, and the process CPU time.
         self.wall_time = number(r.get("wall_time_s"))

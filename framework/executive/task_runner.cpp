@@ -104,6 +104,11 @@ void apply_gripper(const Command& cmd, const perception::World& world, Plant& pl
   }
 }
 
+// Whether the command acts: the robot moves or the gripper closes or opens.
+bool acts(const Command& cmd) {
+  return cmd.u.v != 0 || cmd.u.omega != 0 || cmd.gripper != GripperAction::kNone;
+}
+
 // The task's outcome, counters and compute split from the executive and the plant.
 void finish(const Executive& exec, const Plant& plant, double mission_setup, TaskResult& res) {
   res.status = exec.status();
@@ -176,6 +181,9 @@ TaskResult run_task(const TaskSpec& spec, Plant& plant, const TaskOptions& o) {
     const Clock::time_point c0 = Clock::now();
     const Command cmd = exec.step(pose, t, o.dt);
     res.controller_time += seconds_since(c0);
+    if (std::isnan(res.first_action_time) && acts(cmd)) {
+      res.first_action_time = mission_setup + res.controller_time;
+    }
     if (o.check_invariants) check_tick(cmd, previous, clearance, exec, t);
     if (o.record_spaces && o.record_path) record_spaces(exec, t, res);
     previous = cmd.u;

@@ -5,6 +5,7 @@
 // budget exhausted). The plant is the ground truth for collisions and clearance.
 #pragma once
 
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -91,6 +92,11 @@ struct TaskResult {
   double rebuild_time = 0;
   double control_time = 0;
   double compute_time() const { return mission_time + topology_time + rebuild_time + control_time; }
+  // The compute (s of wall time) before the robot's first act: the mission set-up and every
+  // Executive::step up to and including the first tick whose command moves the robot or the
+  // gripper (v or ω non-zero, or a grip or release). NaN when the task ended without one. A
+  // planner's counterpart is its planning time (it acts once its plan is complete).
+  double first_action_time = std::numeric_limits<double>::quiet_NaN();
   double wall_time = 0;  // s of wall time for the whole run
   int rebuilds = 0;
   int topology_checks = 0;

@@ -59,6 +59,7 @@ class RearmMethod final : public Method {
     out.compute.topology_s = x.topology_time;
     out.compute.rebuild_s = x.rebuild_time;
     out.compute.control_s = x.control_time;
+    out.first_action_s = x.first_action_time;
     out.wall_time_s = x.wall_time;
     out.sim_time_s = x.sim_time;
     out.robot_path_m = x.robot_path_length;

@@ -117,6 +117,7 @@ std::string metrics_json(const scenario::Scenario& s, const RunRecord& r) {
                   {"dt_s", s.simulation.dt},
                   {"wall_time_s", t.wall_time},
                   {"controller_time_s", t.controller_time},
+                  {"first_action_time_s", t.first_action_time},
                   {"real_time_factor", r.real_time_factor()},
                   {"fix_mode_entries", t.fix_mode_entries},
                   {"recoveries", recoveries},

@@ -10,6 +10,7 @@
 #include "core/error.h"
 #include "core/file_io.h"
 #include "experiment/csv.h"
+#include "experiment/log_layout.h"
 #include "experiment/sweep_runner.h"
 #include "experiment/trial_columns.h"
 #include "scenario/sweep_file.h"
@@ -37,16 +38,16 @@ std::vector<std::vector<std::string>> complete_rows(const fs::path& csv, std::si
   }
   std::istringstream lines(text);
   std::string line;
-  if (!std::getline(lines, line) || line != trial_header()) {
-    throw Error(csv.string() + ": not a trial log of this version (its header differs)");
-  }
+  if (!std::getline(lines, line)) throw Error(csv.string() + ": empty (no header)");
+  // A log of an earlier version reads in this version's columns (log_layout.h).
+  const LogLayout layout(parse_csv_line(line), csv.string());
   std::vector<std::vector<std::string>> rows;
   for (std::size_t n = 2; std::getline(lines, line); ++n) {
     std::vector<std::string> f = parse_csv_line(line);
-    if (f.size() != trial_columns().size()) {
+    if (f.size() != layout.width()) {
       throw Error(csv.string() + ": line " + std::to_string(n) + " is damaged");
     }
-    rows.push_back(std::move(f));
+    rows.push_back(layout.upgrade(f));
   }
   return rows;
 }

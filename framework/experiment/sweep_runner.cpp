@@ -154,6 +154,7 @@ SweepSummary run_sweep(const SweepPlan& plan, const MethodRegistry& methods,
   SweepSummary summary;
   summary.planned = plan.trials.size();
   summary.dropped_torn_line = log.dropped_torn_line();
+  summary.added_columns = log.added_columns();
   std::vector<const TrialJob*> todo;
   std::vector<char> needed(plan.instances.size(), 0);
   for (const TrialJob& t : plan.trials) {

@@ -47,6 +47,8 @@ struct SweepSummary {
   std::size_t succeeded = 0;
   std::size_t errors = 0;
   bool dropped_torn_line = false;
+  // Columns this version added that the folder's trial log lacked (TrialLog::added_columns).
+  std::vector<std::string> added_columns;
   double wall_s = 0;
 };
 

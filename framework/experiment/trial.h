@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <string_view>
 
@@ -60,6 +61,10 @@ struct TrialOutcome {
   // online split (mission, topology, rebuild, control) does not apply.
   bool plans_offline = false;
   ComputeSplit compute;
+  // Compute before the first act (s of wall time; NaN when the method never acted): rearm's
+  // mission set-up and control steps up to its first non-zero command, a baseline's planning
+  // until its first plan was complete and valid.
+  double first_action_s = std::numeric_limits<double>::quiet_NaN();
   double wall_time_s = 0;  // the whole trial (planning, validation, simulation)
   double cpu_time_s = 0;   // the trial thread's CPU time (the runner measures it)
   double sim_time_s = 0;   // simulated seconds in Box2D

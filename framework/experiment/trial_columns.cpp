@@ -1,6 +1,7 @@
 #include "experiment/trial_columns.h"
 
 #include <charconv>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <system_error>
@@ -11,10 +12,18 @@
 namespace rearm::experiment {
 namespace {
 
-const char* const kTimingColumns[] = {
-    "planning_time_s", "mission_time_s", "topology_time_s", "rebuild_time_s",
-    "control_time_s",  "compute_time_s", "wall_time_s",     "cpu_time_s",
-    "revision",        "host",           "cpu_model"};
+const char* const kTimingColumns[] = {"planning_time_s",
+                                      "mission_time_s",
+                                      "topology_time_s",
+                                      "rebuild_time_s",
+                                      "control_time_s",
+                                      "compute_time_s",
+                                      "first_action_time_s",
+                                      "wall_time_s",
+                                      "cpu_time_s",
+                                      "revision",
+                                      "host",
+                                      "cpu_model"};
 
 // Shortest text that reads back to x (deterministic columns); "" for non-finite.
 std::string exact(double x) {
@@ -75,6 +84,7 @@ void outcome_fields(const TrialRecord& r, std::vector<std::string>& f) {
     f.push_back(planner ? "" : timing(x));
   }
   f.push_back(timing(o.compute.total()));
+  f.push_back(std::isfinite(o.first_action_s) ? timing(o.first_action_s) : "");
   f.push_back(timing(o.wall_time_s));
   f.push_back(timing(o.cpu_time_s));
   f.push_back(exact(o.sim_time_s));
@@ -136,6 +146,7 @@ const std::vector<std::string>& trial_columns() {
                                                    "rebuild_time_s",
                                                    "control_time_s",
                                                    "compute_time_s",
+                                                   "first_action_time_s",
                                                    "wall_time_s",
                                                    "cpu_time_s",
                                                    "sim_time_s",

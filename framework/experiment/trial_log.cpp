@@ -9,7 +9,9 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "core/file_io.h"
 #include "experiment/csv.h"
+#include "experiment/log_layout.h"
 #include "experiment/trial_columns.h"
 
 namespace rearm::experiment {
@@ -33,9 +35,13 @@ TrialLog::TrialLog(const std::string& path) : path_(path) {
     fs::create_directories(parent, ec);
     if (ec) throw Error(path + ": cannot create its folder: " + ec.message());
   }
-  file_ = std::fopen(path.c_str(), "a");
-  if (file_ == nullptr) throw Error(path + ": cannot open for appending: " + system_reason());
+  if (upgraded_.empty()) open_for_appending();
   if (!exists) append(trial_header());
+}
+
+void TrialLog::open_for_appending() {
+  file_ = std::fopen(path_.c_str(), "a");
+  if (file_ == nullptr) throw Error(path_ + ": cannot open for appending: " + system_reason());
 }
 
 TrialLog::~TrialLog() {
@@ -64,14 +70,17 @@ void TrialLog::resume(const std::string& text) {
     std::fclose(f);
     return;
   }
-  if (line != trial_header()) {
-    throw Error(path_ +
-                ": not a trial log of this version (its header differs); use another "
-                "--out folder");
+  std::vector<std::string> header;
+  try {
+    header = parse_csv_line(line);
+  } catch (const Error& e) {
+    throw Error(path_ + ": line 1: " + e.what());
   }
-  const std::size_t width = trial_columns().size();
+  const LogLayout layout(header, path_);
+  const std::size_t width = layout.width();
   const std::size_t key = trial_column("key");
   const std::size_t revision = trial_column("revision");
+  std::string upgraded = trial_header() + "\n";
   for (std::size_t number = 2; std::getline(lines, line); ++number) {
     std::vector<std::string> f;
     try {
@@ -84,13 +93,25 @@ void TrialLog::resume(const std::string& text) {
                   " fields, not " + std::to_string(width) +
                   " (a damaged file: the writer only ever cuts the last line)");
     }
+    f = layout.upgrade(f);
     done_.insert(f[key]);
     revisions_.insert(f[revision]);
+    upgraded += csv_line(f) + "\n";
+  }
+  if (!layout.missing().empty()) {
+    added_ = layout.missing();
+    upgraded_ = std::move(upgraded);
   }
 }
 
 void TrialLog::append(const std::string& row) {
   const std::lock_guard<std::mutex> lock(mutex_);
+  if (file_ == nullptr) {
+    // A log of an earlier version: its rows in this version's columns, before the first new row.
+    write_file_atomically(path_, upgraded_);
+    upgraded_.clear();
+    open_for_appending();
+  }
   if (std::fprintf(file_, "%s\n", row.c_str()) < 0 || std::fflush(file_) != 0 ||
       ::fsync(fileno(file_)) != 0) {
     throw Error(path_ + ": cannot append a row: " + system_reason());

@@ -79,6 +79,11 @@ TEST(RunBaseline, Fig5CyclicB1ReportsNonMonotoneB2Solves) {
   EXPECT_EQ(b2.execution.collisions, 0);
   EXPECT_GE(b2.plan.moves.size(), 4u);
   expect_released_in_regions(s, b2);
+  // An offline planner acts once its whole plan is found: its first act comes after all of its
+  // planning; B1, which proved the instance non-monotone, never acted.
+  EXPECT_EQ(b2.first_action_time_s, b2.planning_time_s);
+  EXPECT_GT(b2.first_action_time_s, 0);
+  EXPECT_TRUE(std::isnan(b1.first_action_time_s));
 }
 
 TEST(RunBaseline, ReplanningNoticesTheUnknownWall) {
@@ -90,6 +95,9 @@ TEST(RunBaseline, ReplanningNoticesTheUnknownWall) {
   EXPECT_EQ(r.status, "completed") << r.reason;
   EXPECT_GE(r.replans, 1);  // the first plan runs through C1, which it could not see
   EXPECT_EQ(r.execution.collisions, 0);
+  // It acts on its first plan: before the replans' planning.
+  EXPECT_GT(r.first_action_time_s, 0);
+  EXPECT_LT(r.first_action_time_s, r.planning_time_s);
   expect_released_in_regions(s, r);
   // Replanning on the full-knowledge instance Fig. 5 also completes.
   const BaselineRecord f = trial(load("fig5"), Method::kReplan);
@@ -99,7 +107,7 @@ TEST(RunBaseline, ReplanningNoticesTheUnknownWall) {
 
 std::string untimed(const std::string& metrics) {
   static const std::regex timing(
-      R"re(\n\s*"(wall_time_s|controller_time_s|planning_time_s|real_time_factor)": [^\n]*)re");
+      R"re(\n\s*"(wall_time_s|controller_time_s|first_action_time_s|planning_time_s|real_time_factor)": [^\n]*)re");
   return std::regex_replace(metrics, timing, "");
 }
 
@@ -131,6 +139,7 @@ TEST(RunBaseline, QueryLimitEndsTheSearchTheSameWayEveryTime) {
     EXPECT_EQ(a.nodes, b.nodes);
     EXPECT_EQ(a.subqueries, b.subqueries);
     EXPECT_EQ(a.reason, b.reason);
+    EXPECT_TRUE(std::isnan(a.first_action_time_s)) << "no plan, no act";
   }
   BaselineOptions bad;
   bad.query_limit = -1;

@@ -173,6 +173,67 @@ TEST_F(SweepCli, TheUnionOfThreeShardsIsTheUnshardedRun) {
   EXPECT_NE(sweep((work_dir() / "shard_1").string(), "--shard 0/3"), 0);
 }
 
+// The smoke sweep's first-action column: a baseline acts when its plan is complete (its
+// planning time, the same printed number; a replanning one before its replans), rearm after
+// part of its compute; empty exactly
+// where the method never acted (no plan, or rearm's mission ended before a command).
+TEST_F(SweepCli, FirstActionIsAPlannersPlanningAndPartOfRearmsCompute) {
+  const CsvTable t = read_csv((*reference_dir_ / "trials.csv").string());
+  const std::size_t first = t.column("first_action_time_s");
+  std::size_t acted = 0;
+  for (const auto& row : t.rows) {
+    const std::string& f = row[first];
+    if (row[t.column("success")] == "1") {
+      EXPECT_FALSE(f.empty()) << row[t.column("key")];
+    }
+    if (f.empty()) continue;
+    ++acted;
+    const std::string& planning = row[t.column("planning_time_s")];
+    if (!planning.empty() && row[t.column("replans")] == "0") {
+      EXPECT_EQ(f, planning) << row[t.column("method")];
+    } else if (!planning.empty()) {  // the replanning baseline acts on its first plan
+      EXPECT_LE(std::stod(f), std::stod(planning)) << row[t.column("method")];
+    } else {
+      EXPECT_LE(std::stod(f), std::stod(row[t.column("compute_time_s")]) * (1 + 1e-5));
+    }
+  }
+  EXPECT_GE(2 * acted, t.rows.size());
+}
+
+// A folder written before first_action_time_s existed: merged with the column empty, and
+// resumed, its earlier rows rewritten with the column empty before the new ones.
+TEST_F(SweepCli, AFolderOfAnEarlierVersionIsMergedAndResumed) {
+  const fs::path old = work_dir() / "earlier_version";
+  fs::copy(*reference_dir_, old, fs::copy_options::recursive);
+  const CsvTable t = read_csv((*reference_dir_ / "trials.csv").string());
+  const std::size_t drop = t.column("first_action_time_s");
+  const auto without = [&](std::vector<std::string> f) {
+    f.erase(f.begin() + static_cast<std::ptrdiff_t>(drop));
+    return csv_line(f) + "\n";
+  };
+  const std::size_t kept = t.rows.size() - 3;
+  {
+    std::ofstream out(old / "trials.csv", std::ios::binary | std::ios::trunc);
+    out << without(t.header);
+    for (std::size_t i = 0; i < kept; ++i) out << without(t.rows[i]);
+  }
+  const fs::path merged = work_dir() / "earlier_merged";
+  ASSERT_EQ(run("sweep merge " + old.string() + " --out " + merged.string()), 0);
+  const CsvTable m = read_csv((merged / "trials.csv").string());
+  ASSERT_EQ(m.rows.size(), kept);
+  for (const auto& row : m.rows) EXPECT_EQ(row[m.column("first_action_time_s")], "");
+  ASSERT_EQ(sweep(old.string()), 0);
+  expect_same_rows(rows_of(old / "trials.csv"), reference());
+  // The earlier rows read empty; the three run again carry the column as the reference does.
+  const CsvTable r = read_csv((old / "trials.csv").string());
+  std::map<std::string, std::string> first;
+  for (const auto& row : r.rows) first[row[r.column("key")]] = row[drop];
+  for (std::size_t i = 0; i < t.rows.size(); ++i) {
+    const std::string& got = first.at(t.rows[i][t.column("key")]);
+    EXPECT_EQ(got.empty(), i < kept || t.rows[i][drop].empty()) << i;
+  }
+}
+
 std::size_t data_lines(const fs::path& csv) {
   std::ifstream in(csv);
   std::size_t n = 0;

@@ -194,6 +194,16 @@ class EqualTermsTimeTest(unittest.TestCase):
                                   "compute_time_s": "1.5", "wall_time_s": "30"})
         self.assertEqual((rearm.total, rearm.planning, rearm.time), (1.5, None, 1.5))
 
+    def test_first_action(self):
+        """The column as written, None where empty, non-numeric or absent (an older log)."""
+        def first(row):
+            return sweep_data.Trial(dict(row, method="rearm")).first_action
+
+        self.assertEqual(first({"first_action_time_s": "0.0125"}), 0.0125)
+        self.assertIsNone(first({"first_action_time_s": ""}))
+        self.assertIsNone(first({"first_action_time_s": "nan"}))
+        self.assertIsNone(first({}))
+
 
 class CostTest(unittest.TestCase):
     """The report's cost section against hand sums: 3 trials of 600 s, 1,200 s and 1,800 s of

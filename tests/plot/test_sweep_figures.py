@@ -80,6 +80,31 @@ class EntryPointTest(unittest.TestCase):
         self.assertEqual([f for f, _ in answer_figures.figures(s)],
                          ["answer_random.png", "answer_sealed.png", "time_equal_terms.png"])
 
+    def test_first_action_medians_and_an_older_log(self):
+        """The dotted line: the median over a method's solved trials of first_action_time_s,
+        rows without one left out; a log without the column draws none and the title says so."""
+        import answer_figures
+        import sweep_data
+        header = "method,class,objects,status,success,first_action_time_s,compute_time_s\n"
+        rows = ["rearm,random,4,completed,1,0.02,1\n", "rearm,random,4,completed,1,0.04,1\n",
+                "rearm,random,4,completed,1,0.09,1\n", "rearm,random,4,stuck,0,0.5,1\n",
+                "rearm,random,4,completed,1,,1\n", "rearm,random,8,completed,1,0.3,1\n"]
+        with tempfile.TemporaryDirectory() as d:
+            with open(os.path.join(d, "trials.csv"), "w") as f:
+                f.writelines([header] + rows)
+            s = sweep_data.Sweep(d)
+            self.assertEqual(answer_figures.medians(s, "random", "rearm", "first_action"),
+                             [(4, 0.04), (8, 0.3)])
+            self.assertNotIn("predates", answer_figures.equal_terms_title(s))
+            with open(os.path.join(d, "trials.csv"), "w") as f:
+                for line in [header] + rows:
+                    fields = line.split(",")
+                    f.write(",".join(fields[:5] + fields[6:]))
+            old = sweep_data.Sweep(d)
+            self.assertEqual(answer_figures.medians(old, "random", "rearm", "first_action"), [])
+            self.assertIn("predates the first_action_time_s column",
+                          answer_figures.equal_terms_title(old))
+
     def test_usage(self):
         script = os.path.join(PLOT_DIR, "sweep.py")
         self.assertEqual(subprocess.run([sys.executable, script], capture_output=True).returncode,
