@@ -149,6 +149,7 @@ class Trial:
         self.path = number(r.get("robot_path_m"))
         self.reason = r.get("reason", "")
         self.revision = r.get("revision", "")
+        self.finished = r.get("finished_utc", "")  # ISO 8601 UTC; "" in logs before the column
         self.host = r.get("host", "")
         self.cpu = r.get("cpu_model", "")
         # Settings that may vary in a sweep beyond class x N x density: pooled in the figures,
@@ -310,6 +311,9 @@ class Sweep:
         self.footprints = sort_numbers(x.footprint for x in t)
         self.variants = sorted({x.variant for x in t})
         self.revisions = sorted({x.revision for x in t} - {""})
+        # When the trials ended (UTC): the first and the last, or None before finished_utc.
+        ended = sorted(x.finished for x in t if x.finished)
+        self.ended = (ended[0], ended[-1]) if ended else None
         self.hosts = sorted({x.host for x in t} - {""})
         self.cpus = sorted({x.cpu for x in t} - {""})
         self.time_limits = sort_numbers(x.time_limit for x in t)

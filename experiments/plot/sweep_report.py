@@ -103,6 +103,8 @@ def header_lines(s):
         "- time limit per trial: %s s" % (", ".join("%g" % x for x in s.time_limits) or "-"),
         "- revision: %s; host: %s; CPU: %s"
         % (", ".join(s.revisions) or "-", ", ".join(s.hosts) or "-", ", ".join(s.cpus) or "-"),
+        "- trials ended %s" % ("from %s to %s (UTC)" % s.ended if s.ended else
+                               "on dates not recorded (the trial log predates finished_utc)"),
         "- time = planning_time_s for the offline baselines, compute_time_s (mission + topology "
         "+ rebuilds + control) for rearm; medians of time, actions and path are over the "
         "successful trials; success = completed, every goal reached, no collision; "

@@ -1,6 +1,6 @@
 #include "experiment/ompl_log.h"
 
-#include <ctime>
+#include <algorithm>
 #include <filesystem>
 #include <map>
 #include <sstream>
@@ -54,11 +54,22 @@ std::string file_safe(std::string s) {
   return s;
 }
 
-std::string now_text() {
-  const std::time_t t = std::time(nullptr);
-  char buf[64];
-  std::strftime(buf, sizeof buf, "%Y-%m-%d %H:%M:%S", std::gmtime(&t));
-  return buf;
+// OMPL's "Starting at": when the cell's first trial ended (the rows' finished_utc, ISO 8601, in
+// OMPL's "YYYY-MM-DD HH:MM:SS"), the date of the run that produced the log's numbers; "unknown"
+// for rows of a log written before that column, never the time of the report.
+std::string cell_date(const CsvTable& t, const std::vector<const std::vector<std::string>*>& rows) {
+  const auto it = std::find(t.header.begin(), t.header.end(), "finished_utc");
+  if (it == t.header.end()) return "unknown (the trial log predates its finished_utc column)";
+  const std::size_t c = static_cast<std::size_t>(it - t.header.begin());
+  std::string first;
+  for (const auto* r : rows) {
+    const std::string& d = (*r)[c];
+    if (!d.empty() && (first.empty() || d < first)) first = d;
+  }
+  if (first.empty()) return "unknown (the rows predate their finished_utc column)";
+  std::replace(first.begin(), first.end(), 'T', ' ');
+  if (!first.empty() && first.back() == 'Z') first.pop_back();
+  return first;
 }
 
 // The runs of one method, one line each: "v1; v2; ...; ".
@@ -100,7 +111,7 @@ std::string log_text(const CsvTable& t, const std::string& experiment,
     out << name << " " << type << " = " << first[t.column(name)] << "\n";
   }
   out << "Running on " << first[t.column("host")] << "\n";
-  out << "Starting at " << now_text() << "\n";
+  out << "Starting at " << cell_date(t, rows) << "\n";
   out << "<<<|\n" << setup << (setup.empty() || setup.back() == '\n' ? "" : "\n") << "|>>>\n";
   out << "<<<|\n" << first[t.column("cpu_model")] << "\n|>>>\n";
   out << first[t.column("instance_seed")] << " is the random seed\n";

@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <ctime>
 #include <fstream>
 #include <string>
 
@@ -32,6 +33,15 @@ std::string cpu_model() {
   return "unknown";
 }
 
-Provenance this_process() { return Provenance{build_revision(), host_name(), cpu_model()}; }
+Provenance this_process() { return Provenance{build_revision(), host_name(), cpu_model(), ""}; }
+
+std::string utc_now() {
+  const std::time_t t = std::time(nullptr);
+  std::tm utc{};
+  gmtime_r(&t, &utc);
+  char buf[32];
+  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &utc);
+  return buf;
+}
 
 }  // namespace rearm::experiment

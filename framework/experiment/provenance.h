@@ -19,6 +19,10 @@ std::string host_name();
 // The first "model name" of /proc/cpuinfo, "unknown" where there is none.
 std::string cpu_model();
 
+// The revision, host and CPU model (finished_utc is the runner's, per trial).
 Provenance this_process();
+
+// The current time, UTC, as "YYYY-MM-DDTHH:MM:SSZ".
+std::string utc_now();
 
 }  // namespace rearm::experiment

@@ -87,6 +87,7 @@ TrialRecord run_one(const SweepPlan& plan, const TrialJob& t, const Generated& g
   if (!g.scenario) {
     r.outcome.status = TrialStatus::kError;
     r.outcome.reason = g.error;
+    r.provenance.finished_utc = utc_now();
     return r;
   }
   const auto wall0 = std::chrono::steady_clock::now();
@@ -103,6 +104,7 @@ TrialRecord run_one(const SweepPlan& plan, const TrialJob& t, const Generated& g
         std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   }
   r.outcome.cpu_time_s = thread_cpu_seconds() - cpu0;
+  r.provenance.finished_utc = utc_now();
   return r;
 }
 

@@ -111,6 +111,9 @@ struct Provenance {
   std::string revision;  // baked in at build time (provenance.h)
   std::string host;
   std::string cpu_model;
+  // When the trial ended, UTC, ISO 8601 ("2026-12-07T15:04:05Z"; provenance.h utc_now): the
+  // date of the run that produced the row's numbers.
+  std::string finished_utc;
 };
 
 struct TrialRecord {

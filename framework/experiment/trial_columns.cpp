@@ -23,7 +23,8 @@ const char* const kTimingColumns[] = {"planning_time_s",
                                       "cpu_time_s",
                                       "revision",
                                       "host",
-                                      "cpu_model"};
+                                      "cpu_model",
+                                      "finished_utc"};
 
 // Shortest text that reads back to x (deterministic columns); "" for non-finite.
 std::string exact(double x) {
@@ -179,7 +180,8 @@ const std::vector<std::string>& trial_columns() {
                                                    "instance",
                                                    "revision",
                                                    "host",
-                                                   "cpu_model"};
+                                                   "cpu_model",
+                                                   "finished_utc"};
   return columns;
 }
 
@@ -203,6 +205,7 @@ std::vector<std::string> trial_fields(const TrialRecord& r) {
   f.push_back(r.provenance.revision);
   f.push_back(r.provenance.host);
   f.push_back(r.provenance.cpu_model);
+  f.push_back(r.provenance.finished_utc);
   REARM_DEMAND(f.size() == trial_columns().size(), "trial_fields: column count");
   return f;
 }

@@ -14,6 +14,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -122,6 +123,16 @@ void expect_same_rows(const Rows& got, const Rows& want) {
       << load_average() << ")";
 }
 
+// The system clock's time now, UTC, in a strftime format.
+std::string utc(const char* format) {
+  const std::time_t t = std::time(nullptr);
+  std::tm u{};
+  gmtime_r(&t, &u);
+  char buf[32];
+  std::strftime(buf, sizeof buf, format, &u);
+  return buf;
+}
+
 std::size_t smoke_trials() { return scenario::load_sweep_file(kSmoke).trial_count(); }
 
 class SweepCli : public ::testing::Test {
@@ -129,7 +140,9 @@ class SweepCli : public ::testing::Test {
   // The reference: the smoke sweep unsharded on one thread, run once for the suite.
   static void SetUpTestSuite() {
     reference_dir_ = new fs::path(work_dir() / "one_thread");
+    reference_began_ = utc("%Y-%m-%dT%H:%M:%SZ");
     ASSERT_EQ(sweep(reference_dir_->string(), "--threads 1"), 0);
+    reference_ended_ = utc("%Y-%m-%dT%H:%M:%SZ");
   }
   static void TearDownTestSuite() {
     delete reference_dir_;
@@ -137,8 +150,11 @@ class SweepCli : public ::testing::Test {
   }
   static Rows reference() { return rows_of(*reference_dir_ / "trials.csv"); }
   static fs::path* reference_dir_;
+  // The system clock (UTC) just before and after the reference run.
+  static std::string reference_began_, reference_ended_;
 };
 fs::path* SweepCli::reference_dir_ = nullptr;
+std::string SweepCli::reference_began_, SweepCli::reference_ended_;
 
 TEST_F(SweepCli, EveryTrialOnceAndTheSameRowsOnTwoThreads) {
   std::size_t count = 0;
@@ -198,6 +214,17 @@ TEST_F(SweepCli, FirstActionIsAPlannersPlanningAndPartOfRearmsCompute) {
     }
   }
   EXPECT_GE(2 * acted, t.rows.size());
+}
+
+// Every row names when its trial ended, within the reference run by the system clock.
+TEST_F(SweepCli, EveryRowNamesWhenItsTrialEnded) {
+  const CsvTable t = read_csv((*reference_dir_ / "trials.csv").string());
+  for (const auto& row : t.rows) {
+    const std::string& d = row[t.column("finished_utc")];
+    ASSERT_EQ(d.size(), 20u) << d;
+    EXPECT_GE(d, reference_began_);
+    EXPECT_LE(d, reference_ended_);
+  }
 }
 
 // A folder written before first_action_time_s existed: merged with the column empty, and
@@ -341,12 +368,25 @@ TEST_F(SweepCli, OmplBenchmarkStatisticsReadsTheLogs) {
       "python3 -c 'import sqlite3,sys; c=sqlite3.connect(sys.argv[1]); "
       "print(c.execute(\"select count(*) from runs\").fetchone()[0]); "
       "print(c.execute(\"select count(*) from runs where solved=1\").fetchone()[0]); "
-      "print(c.execute(\"select count(distinct objects) from experiments\").fetchone()[0])' " +
+      "print(c.execute(\"select count(distinct objects) from experiments\").fetchone()[0]); "
+      "print(*c.execute(\"select min(date), max(date) from experiments\").fetchone(), "
+      "sep=\"T\")' " +
       db.string() + " > " + counts.string();
   ASSERT_EQ(std::system(query.c_str()), 0);
   std::ifstream in(counts);
   std::size_t runs = 0, solved = 0, object_counts = 0;
   in >> runs >> solved >> object_counts;
+  // Each log's "Starting at" is when its cell's first trial ended, not the report's time: the
+  // earliest and latest cell dates lie inside the reference run.
+  std::string first_day, first_time_last_day, last_time;
+  in >> first_day >> first_time_last_day >> last_time;
+  const std::size_t cut = first_time_last_day.find('T');
+  ASSERT_NE(cut, std::string::npos) << first_time_last_day;
+  const auto iso = [](const std::string& day, const std::string& time) {
+    return day + "T" + time + "Z";
+  };
+  EXPECT_GE(iso(first_day, first_time_last_day.substr(0, cut)), reference_began_);
+  EXPECT_LE(iso(first_time_last_day.substr(cut + 1), last_time), reference_ended_);
   EXPECT_EQ(runs, smoke_trials());
   std::size_t successes = 0;
   const CsvTable t = read_csv((*reference_dir_ / "trials.csv").string());

@@ -57,7 +57,7 @@ TrialRecord record(std::size_t index, const std::string& reason) {
   r.settings.workspace_rule = "side 10";
   r.outcome.status = TrialStatus::kStuck;
   r.outcome.reason = reason;
-  r.provenance = Provenance{"rev", "host", "cpu, with a comma"};
+  r.provenance = Provenance{"rev", "host", "cpu, with a comma", "2026-12-07T15:04:05Z"};
   return r;
 }
 
