@@ -5,7 +5,7 @@ usage: compare_rows.py [--lenient-timeouts] A.csv B.csv
 
 Rows are matched by their `trial` index. Every other column must hold the same text, except
 those that legitimately differ between two runs of the same build: the measured times and the
-provenance (revision, host, CPU model). Used to check that a sharded run (Slurm array, GNU
+provenance (revision, host, CPU model, when the trial ended). Used to check that a sharded run (Slurm array, GNU
 parallel) merged with `rearm sweep merge` gives the rows of the unsharded `rearm sweep`.
 
 Every row is compared in full. A sweep whose baselines are bounded by `query_limit` (a
@@ -26,7 +26,8 @@ import sys
 # The columns `rearm sweep merge` also ignores when it checks two copies of a trial.
 IGNORED = {
     "planning_time_s", "mission_time_s", "topology_time_s", "rebuild_time_s", "control_time_s",
-    "compute_time_s", "wall_time_s", "cpu_time_s", "revision", "host", "cpu_model",
+    "compute_time_s", "first_action_time_s", "wall_time_s", "cpu_time_s", "revision", "host",
+    "cpu_model", "finished_utc",
 }
 # The columns that define a trial (its cell, instance and seeds), in the header's order up to
 # this one, plus the instance's name: all that a time-limited row is compared on.

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -194,6 +195,26 @@ TEST(TrialLog, AHeaderMissingAResultColumnOrWithAnUnknownOneIsRefused) {
       EXPECT_NE(std::string(e.what()).find(why), std::string::npos) << e.what();
     }
   }
+}
+
+// experiments/slurm/compare_rows.py (Python, run as a real process) ignores exactly the columns
+// that `rearm sweep merge` ignores: the timing and provenance ones.
+TEST(TrialColumns, CompareRowsIgnoresTheTimingColumns) {
+  const TempDir dir("compare_rows");
+  const fs::path out = dir.path / "ignored.txt";
+  const std::string cmd =
+      "python3 -c 'import sys; sys.path.insert(0, \"experiments/slurm\"); import compare_rows; "
+      "print(\"\\n\".join(sorted(compare_rows.IGNORED)))' > " +
+      out.string();
+  ASSERT_EQ(std::system(cmd.c_str()), 0);
+  std::vector<std::string> timing;
+  for (const std::string& c : trial_columns()) {
+    if (is_timing_column(c)) timing.push_back(c);
+  }
+  std::sort(timing.begin(), timing.end());
+  std::string want;
+  for (const std::string& c : timing) want += c + "\n";
+  EXPECT_EQ(slurp(out), want);
 }
 
 TEST(TrialColumns, KeysDifferForEverySettingThatChangesAResult) {
