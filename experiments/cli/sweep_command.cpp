@@ -130,13 +130,15 @@ int run_report(const SweepArgs& a) {
 // DIR/cells.csv with the sweep.
 std::vector<experiment::CellVerdict> check_shard_cells(const experiment::SweepPlan& full,
                                                        const experiment::SweepPlan& part,
-                                                       experiment::SweepOptions& o) {
+                                                       experiment::SweepOptions& o,
+                                                       experiment::GeneratedJobs& keep) {
   const std::vector<experiment::InstanceJob> check = experiment::cells_touched(full, part);
   if (o.progress != nullptr) {
     std::fprintf(o.progress, "sweep %s: checking the obstacle density of %zu instances\n",
                  full.name.c_str(), check.size());
   }
-  std::vector<experiment::CellVerdict> verdicts = experiment::check_cells(check, o.threads);
+  std::vector<experiment::CellVerdict> verdicts = experiment::check_cells(check, o.threads, &keep);
+  o.generated = &keep;
   o.cells_csv = experiment::verdicts_csv(verdicts);
   return verdicts;
 }
@@ -186,7 +188,8 @@ int run_sweep_file(SweepArgs a) {
   const experiment::MethodRegistry methods = registry();
   const experiment::SweepPlan full = experiment::plan_sweep(file, methods);
   const experiment::SweepPlan part = experiment::shard_of(full, o.shard);
-  const std::vector<experiment::CellVerdict> verdicts = check_shard_cells(full, part, o);
+  experiment::GeneratedJobs generated;  // by the cell check, for the runner
+  const std::vector<experiment::CellVerdict> verdicts = check_shard_cells(full, part, o, generated);
   if (a.check_only) return write_cell_check(full.name, o, verdicts);
   const experiment::SweepPlan plan = accepted_part(file, part, verdicts);
   std::fprintf(stderr, "sweep %s: %zu trials in shard %s (%zu in the sweep), %d threads, into %s\n",

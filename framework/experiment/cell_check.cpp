@@ -4,7 +4,6 @@
 #include <tbb/task_arena.h>
 
 #include <cstdio>
-#include <exception>
 #include <map>
 
 #include "experiment/csv.h"
@@ -13,33 +12,37 @@
 namespace rearm::experiment {
 namespace {
 
-// Why one instance makes its cell refused, or "" when it does not.
-std::string instance_problem(const InstanceJob& job) {
+// Why one generated instance makes its cell refused, or "" when it does not.
+std::string instance_problem(const InstanceJob& job, const GeneratedJob& g) {
   const std::string who =
       "instance r" + std::to_string(job.rep) + " (seed " + std::to_string(job.spec.seed) + ")";
-  try {
-    const scenario::GeneratedInstance g = scenario::generate_instance(job.spec);
-    if (g.density_reached) return "";
-    char buf[200];
-    std::snprintf(buf, sizeof buf,
-                  "%s reached obstacle density %.3f, target %.3f +- %.2f (after %d redraws)",
-                  who.c_str(), g.achieved_density, job.spec.obstacle_density,
-                  scenario::kDensityTolerance, scenario::kMaxRedraws);
-    return buf;
-  } catch (const std::exception& e) {
-    return who + " cannot be generated: " + e.what();
-  }
+  if (!g.instance) return who + " cannot be generated: " + g.error;
+  if (g.instance->density_reached) return "";
+  char buf[200];
+  std::snprintf(buf, sizeof buf,
+                "%s reached obstacle density %.3f, target %.3f +- %.2f (after %d redraws)",
+                who.c_str(), g.instance->achieved_density, job.spec.obstacle_density,
+                scenario::kDensityTolerance, scenario::kMaxRedraws);
+  return buf;
 }
 
 }  // namespace
 
-std::vector<CellVerdict> check_cells(const std::vector<InstanceJob>& instances, int threads) {
+std::vector<CellVerdict> check_cells(const std::vector<InstanceJob>& instances, int threads,
+                                     GeneratedJobs* keep) {
   std::vector<std::string> problems(instances.size());
+  std::vector<GeneratedJob> generated(instances.size());
   tbb::task_arena arena(threads);
   arena.execute([&] {
-    tbb::parallel_for(std::size_t{0}, instances.size(),
-                      [&](std::size_t i) { problems[i] = instance_problem(instances[i]); });
+    tbb::parallel_for(std::size_t{0}, instances.size(), [&](std::size_t i) {
+      generated[i] = generate_job(instances[i]);
+      problems[i] = instance_problem(instances[i], generated[i]);
+    });
   });
+  if (keep != nullptr) {
+    for (std::size_t i = 0; i < instances.size(); ++i)
+      (*keep)[instances[i].index] = std::move(generated[i]);
+  }
   std::map<std::size_t, CellVerdict> cells;
   for (std::size_t i = 0; i < instances.size(); ++i) {
     CellVerdict& v = cells[instances[i].cell];

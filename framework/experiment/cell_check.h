@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "experiment/generated_job.h"
 #include "experiment/sweep_plan.h"
 
 namespace rearm::experiment {
@@ -24,7 +25,9 @@ struct CellVerdict {
 
 // The verdicts of the cells that `instances` belong to (every instance of each such cell must be
 // among them), in cell order; generated on `threads` threads (the verdicts do not depend on it).
-std::vector<CellVerdict> check_cells(const std::vector<InstanceJob>& instances, int threads);
+// `keep`: where the generated instances go, for the runner (SweepOptions::generated).
+std::vector<CellVerdict> check_cells(const std::vector<InstanceJob>& instances, int threads,
+                                     GeneratedJobs* keep = nullptr);
 
 // The instances of `full` whose cells the shard plan `part` touches: what a shard must check so
 // that every shard refuses the same cells.

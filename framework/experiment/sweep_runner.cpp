@@ -61,10 +61,22 @@ InstanceInfo info_of(const scenario::GeneratedInstance& g) {
   return info;
 }
 
-Generated generate(const InstanceJob& job, const fs::path& instances) {
+// The cell check's instance of the job (SweepOptions::generated) when it made one, else a new one.
+GeneratedJob kept_or_generated(const InstanceJob& job, const GeneratedJobs* pre) {
+  if (pre != nullptr) {
+    const auto it = pre->find(job.index);
+    if (it != pre->end()) return it->second;
+  }
+  return generate_job(job);
+}
+
+// The job's instance, kept as instances/<name>.yaml, or why it could not be generated.
+Generated generate(const InstanceJob& job, const fs::path& instances, const GeneratedJobs* pre) {
   Generated out;
   try {
-    scenario::GeneratedInstance g = scenario::generate_instance(job.spec);
+    GeneratedJob j = kept_or_generated(job, pre);
+    if (!j.instance) throw Error(j.error);
+    scenario::GeneratedInstance& g = *j.instance;
     g.scenario.name = instance_name(job);
     out.info = info_of(g);
     const fs::path file = instances / (g.scenario.name + ".yaml");
@@ -182,7 +194,7 @@ SweepSummary run_sweep(const SweepPlan& plan, const MethodRegistry& methods,
   tbb::task_arena arena(o.threads);
   arena.execute([&] {
     tbb::parallel_for(std::size_t{0}, plan.instances.size(), [&](std::size_t i) {
-      if (needed[i]) generated[i] = generate(plan.instances[i], dir / kInstancesDir);
+      if (needed[i]) generated[i] = generate(plan.instances[i], dir / kInstancesDir, o.generated);
     });
     tbb::parallel_for(
         tbb::blocked_range<std::size_t>(0, todo.size(), 1),

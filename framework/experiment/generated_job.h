@@ -1,0 +1,29 @@
+// One instance of a sweep generated from its spec (scenario::generate_instance), or why it could
+// not be. The cell check (cell_check.h) generates every instance of the cells a shard touches and
+// keeps them by canonical instance index; the runner (sweep_runner.h) takes those and generates
+// only the ones the check did not. Generation is a function of the spec, so a kept instance is
+// the one the runner would have generated.
+#pragma once
+
+#include <cstddef>
+#include <map>
+#include <optional>
+#include <string>
+
+#include "experiment/sweep_plan.h"
+#include "scenario/random_instance.h"
+
+namespace rearm::experiment {
+
+struct GeneratedJob {
+  std::optional<scenario::GeneratedInstance> instance;
+  std::string error;  // the generator's message when it threw; empty otherwise
+};
+
+// Generates the job's instance; a generator exception becomes `error`.
+GeneratedJob generate_job(const InstanceJob& job);
+
+// Generated instances by canonical instance index (InstanceJob::index).
+using GeneratedJobs = std::map<std::size_t, GeneratedJob>;
+
+}  // namespace rearm::experiment
