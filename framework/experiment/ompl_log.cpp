@@ -54,6 +54,14 @@ std::string file_safe(std::string s) {
   return s;
 }
 
+// The log's name for a cell: sweep, class, N, target density, width and unknown mix.
+std::string cell_name(const CsvTable& t, const std::vector<std::string>& first) {
+  return file_safe(first[t.column("sweep")] + "_" + first[t.column("class")] + "_n" +
+                   first[t.column("objects")] + "_d" + first[t.column("target_density")] + "_w" +
+                   first[t.column("workspace_width_m")] + "_u" +
+                   first[t.column("unknown_fraction")] + "_" + first[t.column("unknown_shapes")]);
+}
+
 // OMPL's "Starting at": when the cell's first trial ended (the rows' finished_utc, ISO 8601, in
 // OMPL's "YYYY-MM-DD HH:MM:SS"), the date of the run that produced the log's numbers; "unknown"
 // for rows of a log written before that column, never the time of the report.
@@ -136,14 +144,18 @@ std::vector<std::string> write_ompl_logs(const CsvTable& t, const std::string& s
     if (!rows.count(k)) cells.push_back(k);
     rows[k].push_back(&row);
   }
+  std::map<std::string, std::string> names;  // cell key -> file name
+  std::map<std::string, int> uses;
+  for (const std::string& k : cells) ++uses[names[k] = cell_name(t, *rows[k].front())];
   std::vector<std::string> written;
   for (const std::string& k : cells) {
     const auto& first = *rows[k].front();
-    const std::string name =
-        file_safe(first[t.column("sweep")] + "_" + first[t.column("class")] + "_n" +
-                  first[t.column("objects")] + "_d" + first[t.column("target_density")] + "_w" +
-                  first[t.column("workspace_width_m")] + "_u" +
-                  first[t.column("unknown_fraction")] + "_" + first[t.column("unknown_shapes")]);
+    std::string name = names[k];
+    // One cell run at several budgets (NAME@K methods): a log per budget, never one over another.
+    if (uses[name] > 1) {
+      name = file_safe(name + "_t" + first[t.column("time_limit_s")] + "_q" +
+                       first[t.column("query_limit")]);
+    }
     const std::string path = (std::filesystem::path(dir) / (name + ".log")).string();
     write_file_atomically(path, log_text(t, name, rows[k], setup));
     written.push_back(path);

@@ -15,9 +15,10 @@
 
 namespace rearm::experiment {
 
-// Writes DIR/<sweep>_<cell>.log for every cell of the table (rows of trial_columns()); returns
-// the paths written, in cell order. `setup` is the sweep file's text (the experiment's setup).
-// Throws rearm::Error for a table that lacks a trial column or a folder it cannot write.
+// Writes DIR/<sweep>_<cell>.log for every cell of the table (rows of trial_columns(); a cell run
+// at several budgets, methods NAME@K, gets one log per budget, <sweep>_<cell>_t<T>_q<Q>.log);
+// returns the paths written, in cell order. `setup` is the sweep file's text (the experiment's
+// setup). Throws rearm::Error for a table that lacks a trial column or a folder it cannot write.
 std::vector<std::string> write_ompl_logs(const CsvTable& trials, const std::string& setup,
                                          const std::string& dir);
 
