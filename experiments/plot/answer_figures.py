@@ -7,7 +7,8 @@ solved trials of what a trial cost to carry the task out (a baseline's planning 
 execution in Box2D; rearm's whole online compute) against N, solid; the baselines' offline
 planning alone, dashed; and each method's time to a first action (the compute before its
 first motion or grip: a planner's planning until its plan is complete, rearm's mission set-up
-and control steps until its first command), dotted. The usual time figure sets rearm's whole
+and control steps until its first command), dotted; for a planner that plans offline the dotted
+line lies on the dashed one. The usual time figure sets rearm's whole
 run against the baselines' planning only. A trial log written before first_action_time_s
 existed has no dotted lines, and the title says so.
 """
