@@ -1,8 +1,10 @@
 #include "experiment/log_layout.h"
 
 #include <map>
+#include <sstream>
 
 #include "core/error.h"
+#include "experiment/csv.h"
 #include "experiment/trial_columns.h"
 
 namespace rearm::experiment {
@@ -40,6 +42,38 @@ std::vector<std::string> LogLayout::upgrade(const std::vector<std::string>& row)
   out.reserve(source_.size());
   for (const std::ptrdiff_t s : source_) {
     out.push_back(s < 0 ? std::string() : row[static_cast<std::size_t>(s)]);
+  }
+  return out;
+}
+
+namespace {
+
+// The fields of line `number` of `where`, its parse error named with the line.
+std::vector<std::string> fields_of(const std::string& line, std::size_t number,
+                                   const std::string& where) {
+  try {
+    return parse_csv_line(line);
+  } catch (const Error& e) {
+    throw Error(where + ": line " + std::to_string(number) + ": " + e.what());
+  }
+}
+
+}  // namespace
+
+LogRows read_log_rows(const std::string& complete, const std::string& where) {
+  std::istringstream lines(complete);
+  std::string line;
+  std::getline(lines, line);
+  const LogLayout layout(fields_of(line, 1, where), where);
+  LogRows out{layout.missing(), {}};
+  for (std::size_t number = 2; std::getline(lines, line); ++number) {
+    const std::vector<std::string> f = fields_of(line, number, where);
+    if (f.size() != layout.width()) {
+      throw Error(where + ": line " + std::to_string(number) + " has " + std::to_string(f.size()) +
+                  " fields, not " + std::to_string(layout.width()) +
+                  " (a damaged file: the writer only ever cuts the last line)");
+    }
+    out.rows.push_back(layout.upgrade(f));
   }
   return out;
 }

@@ -30,4 +30,16 @@ class LogLayout {
   std::vector<std::ptrdiff_t> source_;  // per current column: its index in the log, or -1
 };
 
+// A trial log's complete lines read in this version's columns.
+struct LogRows {
+  std::vector<std::string> added;  // this version's columns the log lacked (LogLayout::missing)
+  std::vector<std::vector<std::string>> rows;
+};
+
+// `complete`: a log's text up to its last newline, the header its first line (callers handle a
+// log with no complete line). Throws rearm::Error naming `where` and the line for a malformed
+// line, a header of no version, or a row whose field count is not its header's (damage: the
+// writer only ever cuts the last line).
+LogRows read_log_rows(const std::string& complete, const std::string& where);
+
 }  // namespace rearm::experiment

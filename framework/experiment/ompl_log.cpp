@@ -76,7 +76,7 @@ std::string cell_date(const CsvTable& t, const std::vector<const std::vector<std
   }
   if (first.empty()) return "unknown (the rows predate their finished_utc column)";
   std::replace(first.begin(), first.end(), 'T', ' ');
-  if (!first.empty() && first.back() == 'Z') first.pop_back();
+  if (first.back() == 'Z') first.pop_back();
   return first;
 }
 

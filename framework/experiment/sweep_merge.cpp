@@ -36,20 +36,9 @@ std::vector<std::vector<std::string>> complete_rows(const fs::path& csv, std::si
     ++torn;
     text.erase(end == std::string::npos ? 0 : end + 1);
   }
-  std::istringstream lines(text);
-  std::string line;
-  if (!std::getline(lines, line)) throw Error(csv.string() + ": empty (no header)");
+  if (text.empty()) throw Error(csv.string() + ": empty (no header)");
   // A log of an earlier version reads in this version's columns (log_layout.h).
-  const LogLayout layout(parse_csv_line(line), csv.string());
-  std::vector<std::vector<std::string>> rows;
-  for (std::size_t n = 2; std::getline(lines, line); ++n) {
-    std::vector<std::string> f = parse_csv_line(line);
-    if (f.size() != layout.width()) {
-      throw Error(csv.string() + ": line " + std::to_string(n) + " is damaged");
-    }
-    rows.push_back(layout.upgrade(f));
-  }
-  return rows;
+  return read_log_rows(text, csv.string()).rows;
 }
 
 bool same_result(const std::vector<std::string>& a, const std::vector<std::string>& b) {

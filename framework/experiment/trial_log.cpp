@@ -58,9 +58,7 @@ void TrialLog::resume(const std::string& text) {
     }
     dropped_torn_ = true;
   }
-  std::istringstream lines(text.substr(0, complete));
-  std::string line;
-  if (!std::getline(lines, line)) {
+  if (complete == 0) {
     // Nothing complete, not even the header: start the file afresh.
     if (::truncate(path_.c_str(), 0) != 0)
       throw Error(path_ + ": cannot reset: " + system_reason());
@@ -70,38 +68,18 @@ void TrialLog::resume(const std::string& text) {
     std::fclose(f);
     return;
   }
-  std::vector<std::string> header;
-  try {
-    header = parse_csv_line(line);
-  } catch (const Error& e) {
-    throw Error(path_ + ": line 1: " + e.what());
-  }
-  const LogLayout layout(header, path_);
-  const std::size_t width = layout.width();
+  LogRows log = read_log_rows(text.substr(0, complete), path_);
   const std::size_t key = trial_column("key");
   const std::size_t revision = trial_column("revision");
-  std::string upgraded = trial_header() + "\n";
-  for (std::size_t number = 2; std::getline(lines, line); ++number) {
-    std::vector<std::string> f;
-    try {
-      f = parse_csv_line(line);
-    } catch (const Error& e) {
-      throw Error(path_ + ": line " + std::to_string(number) + ": " + e.what());
-    }
-    if (f.size() != width) {
-      throw Error(path_ + ": line " + std::to_string(number) + " has " + std::to_string(f.size()) +
-                  " fields, not " + std::to_string(width) +
-                  " (a damaged file: the writer only ever cuts the last line)");
-    }
-    f = layout.upgrade(f);
+  for (const std::vector<std::string>& f : log.rows) {
     done_.insert(f[key]);
     revisions_.insert(f[revision]);
-    upgraded += csv_line(f) + "\n";
   }
-  if (!layout.missing().empty()) {
-    added_ = layout.missing();
-    upgraded_ = std::move(upgraded);
-  }
+  if (log.added.empty()) return;
+  // A log of an earlier version: rewritten in this version's columns before its first new row.
+  added_ = std::move(log.added);
+  upgraded_ = trial_header() + "\n";
+  for (const std::vector<std::string>& f : log.rows) upgraded_ += csv_line(f) + "\n";
 }
 
 void TrialLog::append(const std::string& row) {
