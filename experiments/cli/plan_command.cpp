@@ -1,5 +1,6 @@
 // rearm plan --formula F [--initial ACTION] [--infeasible ACTION ...] [--objects ..]
 //            [--regions ..] [--allow-negation] [--graph paper|selfloop] [--show-graph]
+//            [--form auto|explicit|product]
 // Runs the mission controller against a perfect executor (every action succeeds except the
 // listed ones) and prints the action lasso.
 #include <cstdio>
@@ -40,6 +41,11 @@ constexpr const char* kFooter =
     "exactly: the multi-hop runs of Eq. 4). --show-graph prints G first: its nodes with d_F\n"
     "(Eq. 7) and V_F (Eq. 6), its edges with the symbols driving them (Eq. 9), accepting\n"
     "edges (Def. 3) marked.\n"
+    "--form chooses the automaton: auto (default) runs a conjunction of independent parts over\n"
+    "disjoint predicates, each able to wait, as one small automaton per part (the product\n"
+    "form, docs/symbolic.md: same language, same choices; the any-order task of N objects\n"
+    "has 2^N states as one automaton); explicit always translates the whole formula (the\n"
+    "paper's construction); product demands the product form.\n"
     "Exit: 0 when a lasso or infeasibility was printed, 1 when --max-steps ran out,\n"
     "2 for bad usage or a formula outside the fragment.";
 
@@ -48,7 +54,7 @@ constexpr std::size_t kMostMaxSteps = 999999999;
 
 // The command line of `rearm plan`, parsed.
 struct PlanArgs {
-  std::string formula, initial, graph, objects, regions;
+  std::string formula, initial, graph, form, objects, regions;
   std::vector<std::string> infeasible;
   std::size_t max_steps = kDefaultMaxSteps;
   bool show_graph = false, allow_negation = false;
@@ -75,6 +81,7 @@ symbolic::MissionOptions mission_options(const PlanArgs& a) {
   symbolic::MissionOptions options;
   if (!a.initial.empty()) options.initial = symbolic::Action::parse(a.initial);
   if (!a.graph.empty()) options.graph = symbolic::parse_graph_mode(a.graph);
+  if (!a.form.empty()) options.form = symbolic::parse_mission_form(a.form);
   options.allow_negation = a.allow_negation;
   if (!a.objects.empty()) options.vocabulary.objects = split_list(a.objects);
   if (!a.regions.empty()) options.vocabulary.regions = split_list(a.regions);
@@ -87,7 +94,7 @@ int plan(const PlanArgs& a) {
   for (const std::string& text : a.infeasible) infeasible.push_back(symbolic::Action::parse(text));
   for (const auto& x : infeasible) options.vocabulary.check(x);
   symbolic::MissionController mc(ltl::parse(a.formula), options);
-  if (a.show_graph) std::fputs(mc.graph().to_text().c_str(), stdout);
+  if (a.show_graph) std::fputs(mc.graph_text().c_str(), stdout);
   auto is_infeasible = [&](const symbolic::Action& x) {
     for (const auto& b : infeasible) {
       if (x == b) return true;
@@ -149,6 +156,8 @@ Command add_plan(CLI::App& program) {
   c->add_option("--graph", a->graph, "G's construction: selfloop (default) or paper")
       ->check(CLI::IsMember({"paper", "selfloop"}));
   c->add_flag("--show-graph", a->show_graph, "print G first");
+  c->add_option("--form", a->form, "the automaton: auto (default), explicit or product")
+      ->check(CLI::IsMember({"auto", "explicit", "product"}));
   return {c, [a] { return plan(*a); }};
 }
 

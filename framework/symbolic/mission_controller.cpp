@@ -85,12 +85,41 @@ void check_mission_formula(const ltl::Formula& f, const Vocabulary& vocabulary,
   }
 }
 
+const char* to_string(MissionForm f) {
+  switch (f) {
+    case MissionForm::kAuto:
+      return "auto";
+    case MissionForm::kExplicit:
+      return "explicit";
+    case MissionForm::kProduct:
+      return "product";
+  }
+  return "?";
+}
+
+MissionForm parse_mission_form(const std::string& text) {
+  if (text == "auto") return MissionForm::kAuto;
+  if (text == "explicit") return MissionForm::kExplicit;
+  if (text == "product") return MissionForm::kProduct;
+  throw Error("unknown mission form '" + text + "' (expected auto, explicit or product)");
+}
+
 MissionController::MissionController(const ltl::Formula& formula, MissionOptions options) {
   check_mission_formula(formula, options.vocabulary, options.allow_negation);
   std::vector<std::string> extra;
   if (options.initial) {
     options.vocabulary.check(*options.initial);
     extra.push_back(options.initial->to_string());
+  }
+  mode_ = options.graph;
+  if (options.form != MissionForm::kExplicit) {
+    std::string why;
+    product_ =
+        ProductMission::build(formula, {options.initial, options.translate, options.graph}, &why);
+    if (product_) return;
+    if (options.form == MissionForm::kProduct) {
+      throw Error("the product form does not apply to '" + formula.to_string() + "': " + why);
+    }
   }
   nba_ = ltl::translate_actions(formula, options.translate, nullptr, extra);
   for (const std::string& ap : nba_.alphabet.aps()) actions_.push_back(Action::parse(ap));
@@ -101,7 +130,6 @@ MissionController::MissionController(const ltl::Formula& formula, MissionOptions
   reachable_ = read(nba_.initial, held_);  // π0 is the symbol at instant 0
   graph_ = std::make_unique<MissionGraph>(nba_, MissionGraph::Start{{}, held_}, excluded_,
                                           options.graph);
-  mode_ = options.graph;
   if (graph_->d_f(node_) == MissionGraph::kInfinity) {
     set_infeasible(
         "the formula has no satisfying sequence of actions (no accepting cycle of "
@@ -109,7 +137,77 @@ MissionController::MissionController(const ltl::Formula& formula, MissionOptions
   }
 }
 
-std::uint32_t MissionController::automaton_state() const { return graph_->node(node_).state; }
+namespace {
+
+void demand_whole(bool product, const char* what) {
+  if (product) {
+    throw Error(std::string(what) +
+                ": the mission runs in the product form (one automaton per independent part)");
+  }
+}
+
+}  // namespace
+
+std::uint32_t MissionController::automaton_state() const {
+  demand_whole(product_ != nullptr, "automaton_state");
+  return graph_->node(node_).state;
+}
+
+const ltl::ActionNba& MissionController::automaton() const {
+  demand_whole(product_ != nullptr, "automaton");
+  return nba_;
+}
+
+const MissionGraph& MissionController::graph() const {
+  demand_whole(product_ != nullptr, "graph");
+  return *graph_;
+}
+
+std::size_t MissionController::automaton_states() const {
+  if (!product_) return nba_.num_states();
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < product_->num_groups(); ++i) {
+    n += product_->part_automaton(i).num_states();
+  }
+  return n;
+}
+
+std::size_t MissionController::automaton_edges() const {
+  if (!product_) return nba_.num_edges();
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < product_->num_groups(); ++i) {
+    n += product_->part_automaton(i).num_edges();
+  }
+  return n;
+}
+
+std::string MissionController::graph_text() const {
+  return product_ ? product_->to_text() : graph_->to_text();
+}
+
+const std::vector<std::string>& MissionController::aps() const {
+  return product_ ? product_->aps() : nba_.alphabet.aps();
+}
+
+MissionStatus MissionController::status() const {
+  if (!product_) return status_;
+  if (product_->infeasible()) return MissionStatus::Infeasible;
+  return product_->accepting() ? MissionStatus::Accepting : MissionStatus::InProgress;
+}
+
+const std::string& MissionController::reason() const {
+  return product_ ? product_->reason() : reason_;
+}
+
+std::uint32_t MissionController::node() const { return product_ ? product_->node() : node_; }
+
+std::size_t MissionController::held_letter() const {
+  return product_ ? product_->held_letter() : held_;
+}
+
+std::uint32_t MissionController::generation() const {
+  return product_ ? product_->generation() : generation_;
+}
 
 Action MissionController::action_of(std::size_t letter) const {
   REARM_DEMAND(letter >= 1 && letter <= actions_.size(), "not an action letter");
@@ -117,6 +215,7 @@ Action MissionController::action_of(std::size_t letter) const {
 }
 
 std::vector<Action> MissionController::infeasible_actions() const {
+  if (product_) return product_->infeasible_actions();
   std::vector<Action> out;
   for (std::size_t l = excluded_.next(1); l < excluded_.universe(); l = excluded_.next(l + 1)) {
     out.push_back(action_of(l));
@@ -131,35 +230,73 @@ void MissionController::set_infeasible(std::string reason) {
 }
 
 // Candidate edges from the current node: accepting edges in a cycle when in V_F, else edges
-// one hop closer to V_F (Eq. 8). Among them, an edge the held letter already drives (no
-// action needed) first, then the lowest feasible action letter; ties by edge order, so the
-// controller is deterministic. With only_same_edge, only other letters of the failed edge.
-std::optional<MissionController::Choice> MissionController::choose(
-    bool only_same_edge, const std::optional<Choice>& failed) const {
+// one hop closer to V_F (Eq. 8).
+std::vector<MissionController::Choice> MissionController::candidates() const {
+  std::vector<Choice> all;
   const auto& out = graph_->out(node_);
   const std::uint32_t d = graph_->d_f(node_);
-  if (d == MissionGraph::kInfinity) return std::nullopt;
+  if (d == MissionGraph::kInfinity) return all;
   const bool in_vf = graph_->in_vf(node_);
-  std::optional<Choice> best;
   for (std::size_t i = 0; i < out.size(); ++i) {
-    if (only_same_edge && (!failed || i != failed->edge)) continue;
-    if (!only_same_edge && failed && i == failed->edge) continue;
     const MissionGraph::Edge& e = out[i];
     const bool candidate = in_vf ? (e.accepting && e.in_cycle) : graph_->d_f(e.dst) + 1 == d;
     if (!candidate) continue;
-    if (e.letters.test(held_)) return Choice{i, held_};  // nothing to do
+    if (e.letters.test(held_)) {
+      all.push_back(Choice{i, held_});  // nothing to do
+      continue;
+    }
     // The lowest feasible action letter (letter 0 cannot be performed).
     std::size_t letter = e.letters.next(1);
     while (letter < e.letters.universe() && excluded_.test(letter)) {
       letter = e.letters.next(letter + 1);
     }
-    if (letter >= e.letters.universe()) continue;
-    if (!best || letter < best->letter) best = Choice{i, letter};
+    if (letter < e.letters.universe()) all.push_back(Choice{i, letter});
+  }
+  return all;
+}
+
+// Among the candidates, an edge the held letter already drives (no action needed) first, then
+// the lowest feasible action letter; ties by edge order, so the controller is deterministic.
+// With only_same_edge, only other letters of the failed edge.
+std::optional<MissionController::Choice> MissionController::choose(
+    bool only_same_edge, const std::optional<Choice>& failed) const {
+  std::optional<Choice> best;
+  for (const Choice& c : candidates()) {
+    if (only_same_edge && (!failed || c.edge != failed->edge)) continue;
+    if (!only_same_edge && failed && c.edge == failed->edge) continue;
+    if (c.letter == held_) return c;
+    if (!best || c.letter < best->letter) best = c;
   }
   return best;
 }
 
+std::vector<Action> MissionController::alternatives() const {
+  if (product_) return product_->alternatives();
+  std::vector<Action> out;
+  if (!pending_ || status_ == MissionStatus::Infeasible) return out;
+  out.push_back(action_of(pending_->letter));
+  for (const Choice& c : candidates()) {
+    if (c.letter == held_) continue;
+    const Action a = action_of(c.letter);
+    if (std::find(out.begin(), out.end(), a) == out.end()) out.push_back(a);
+  }
+  return out;
+}
+
+void MissionController::prefer(const Action& action) {
+  if (product_) return product_->prefer(action);
+  if (!pending_) throw Error("prefer: no action is pending (call next_action first)");
+  for (const Choice& c : candidates()) {
+    if (c.letter != held_ && action_of(c.letter) == action) {
+      pending_ = c;
+      return;
+    }
+  }
+  throw Error("prefer: " + action.to_string() + " is not an alternative of the pending action");
+}
+
 std::optional<Action> MissionController::next_action() {
+  if (product_) return product_->next_action();
   if (status_ == MissionStatus::Infeasible) return std::nullopt;
   if (pending_) return action_of(pending_->letter);
   // Follow edges that need no action (stuttering) until an action is needed or the mission
@@ -193,6 +330,7 @@ std::optional<Action> MissionController::next_action() {
 }
 
 void MissionController::report_success() {
+  if (product_) return product_->report_success();
   if (!pending_) throw Error("report_success: no action is pending (call next_action first)");
   const MissionGraph::Edge& e = graph_->out(node_)[pending_->edge];
   if (e.accepting && e.in_cycle) status_ = MissionStatus::Accepting;
@@ -204,30 +342,11 @@ void MissionController::report_success() {
 
 std::vector<std::uint32_t> MissionController::read(const std::vector<std::uint32_t>& states,
                                                    std::size_t letter) const {
-  std::vector<char>& in = read_mark_;  // scratch, kept between calls: no allocation
-  in.assign(nba_.num_states(), 0);
-  std::vector<std::uint32_t> out;
-  for (std::uint32_t q : states) {
-    for (const auto& e : nba_.out[q]) {
-      if (e.guard.test(letter) && !in[e.dst]) {
-        in[e.dst] = 1;
-        out.push_back(e.dst);
-      }
-    }
-  }
-  for (std::size_t i = 0; i < out.size(); ++i) {  // holding the letter longer
-    for (const auto& e : nba_.out[out[i]]) {
-      if (e.guard.test(letter) && !in[e.dst]) {
-        in[e.dst] = 1;
-        out.push_back(e.dst);
-      }
-    }
-  }
-  std::sort(out.begin(), out.end());
-  return out;
+  return read_holding(nba_, states, letter, read_mark_);
 }
 
 void MissionController::report_infeasible(const Action& action) {
+  if (product_) return product_->report_infeasible(action);
   if (!pending_ || action_of(pending_->letter) != action) {
     throw Error("report_infeasible: " + action.to_string() +
                 " is not the pending action of the mission controller");

@@ -21,6 +21,7 @@
 #include "ltl/translate.h"
 #include "symbolic/action.h"
 #include "symbolic/mission_graph.h"
+#include "symbolic/mission_product.h"
 
 namespace rearm::symbolic {
 
@@ -41,6 +42,16 @@ const char* to_string(MissionStatus s);
 void check_mission_formula(const ltl::Formula& f, const Vocabulary& vocabulary = {},
                            bool allow_negation = false);
 
+// How the formula becomes an automaton. kExplicit: one automaton of the whole formula (the
+// paper's construction, Section III). kAuto (the default): the product form of
+// mission_product.h when the formula has it (a conjunction of independent parts that can
+// wait; the same language and the same choices, docs/symbolic.md), else kExplicit. kProduct:
+// the product form or an error saying why the formula does not have it.
+enum class MissionForm { kAuto, kExplicit, kProduct };
+const char* to_string(MissionForm f);
+// "auto", "explicit" or "product"; throws rearm::Error naming the text otherwise.
+MissionForm parse_mission_form(const std::string& text);
+
 struct MissionOptions {
   std::optional<Action> initial;  // π0; none: the empty symbol
   Vocabulary vocabulary;          // empty: any names
@@ -49,6 +60,7 @@ struct MissionOptions {
   // G's construction (mission_graph.h): the self-loopized automaton (complete, the default and
   // the experiments' choice) or Appendix I-B exactly.
   GraphMode graph = GraphMode::kSelfLoop;
+  MissionForm form = MissionForm::kAuto;
 };
 
 class MissionController {
@@ -66,19 +78,35 @@ class MissionController {
   // The action returned by next_action() proved infeasible (throws rearm::Error for any
   // other action).
   void report_infeasible(const Action& action);
+  // The actions that would serve as well as the pending one (Eq. 8: each lowers d_F by one, or
+  // takes an accepting edge of the cycle when in V_F), the pending one first; empty when
+  // nothing is pending. The executive may pick among them by what it sees (prefer()).
+  std::vector<Action> alternatives() const;
+  // Makes `action`, one of alternatives(), the pending action; throws rearm::Error otherwise.
+  void prefer(const Action& action);
 
-  MissionStatus status() const { return status_; }
-  const std::string& reason() const { return reason_; }
-  // The current automaton state (MissionGraph::kAux before the first step).
+  MissionStatus status() const;
+  const std::string& reason() const;
+  // Whether the product form runs the mission (MissionOptions::form).
+  bool product_form() const { return product_ != nullptr; }
+  // The current automaton state (MissionGraph::kAux before the first step); whole-automaton
+  // form only, as are automaton() and graph() (they throw rearm::Error in the product form).
   std::uint32_t automaton_state() const;
-  const ltl::ActionNba& automaton() const { return nba_; }
-  const MissionGraph& graph() const { return *graph_; }
-  // Current node of graph() and how often G was rebuilt: together they identify the
+  const ltl::ActionNba& automaton() const;
+  const MissionGraph& graph() const;
+  // States and edges of the automaton (summed over the parts in the product form).
+  std::size_t automaton_states() const;
+  std::size_t automaton_edges() const;
+  // G (or every part's G in the product form) as text.
+  std::string graph_text() const;
+  // The predicates: letter i+1 is aps()[i].
+  const std::vector<std::string>& aps() const;
+  // Current decision node and how often G was rebuilt: together they identify the
   // controller's decision state (used to detect the plan's lasso).
-  std::uint32_t node() const { return node_; }
-  // The letter held now (0: none; i+1: automaton().alphabet.aps()[i]).
-  std::size_t held_letter() const { return held_; }
-  std::uint32_t generation() const { return generation_; }
+  std::uint32_t node() const;
+  // The letter held now (0: none; i+1: aps()[i]).
+  std::size_t held_letter() const;
+  std::uint32_t generation() const;
   std::vector<Action> infeasible_actions() const;
 
  private:
@@ -94,6 +122,11 @@ class MissionController {
   Action action_of(std::size_t letter) const;
   void set_infeasible(std::string reason);
 
+  // Per edge of the current node that Eq. 8 allows (in edge order): the held letter when it
+  // drives the edge (nothing to do), else the lowest feasible action letter.
+  std::vector<Choice> candidates() const;
+
+  std::unique_ptr<ProductMission> product_;  // the product form, when it runs the mission
   ltl::ActionNba nba_;
   std::vector<Action> actions_;  // letter i+1 is actions_[i]
   std::size_t held_ = 0;         // held letter (0: none)

@@ -49,6 +49,32 @@ GraphMode parse_graph_mode(const std::string& text) {
   throw Error("unknown graph construction '" + text + "' (expected paper or selfloop)");
 }
 
+std::vector<std::uint32_t> read_holding(const ltl::ActionNba& nba,
+                                        const std::vector<std::uint32_t>& states,
+                                        std::size_t letter, std::vector<char>& scratch) {
+  std::vector<char>& in = scratch;
+  in.assign(nba.num_states(), 0);
+  std::vector<std::uint32_t> out;
+  for (std::uint32_t q : states) {
+    for (const auto& e : nba.out[q]) {
+      if (e.guard.test(letter) && !in[e.dst]) {
+        in[e.dst] = 1;
+        out.push_back(e.dst);
+      }
+    }
+  }
+  for (std::size_t i = 0; i < out.size(); ++i) {  // holding the letter longer
+    for (const auto& e : nba.out[out[i]]) {
+      if (e.guard.test(letter) && !in[e.dst]) {
+        in[e.dst] = 1;
+        out.push_back(e.dst);
+      }
+    }
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
 MissionGraph::MissionGraph(const ltl::ActionNba& nba, Start start, const LetterSet& excluded,
                            GraphMode mode)
     : nba_(&nba), mode_(mode) {

@@ -36,6 +36,13 @@ const char* to_string(GraphMode m);
 // "paper" or "selfloop"; throws rearm::Error naming the text otherwise.
 GraphMode parse_graph_mode(const std::string& text);
 
+// The automaton states a run from `states` can be in after reading `letter` once and then
+// holding it (stuttering) as long as it likes: the held-letter word semantics of
+// docs/symbolic.md. `scratch` is reused between calls. Sorted.
+std::vector<std::uint32_t> read_holding(const ltl::ActionNba& nba,
+                                        const std::vector<std::uint32_t>& states,
+                                        std::size_t letter, std::vector<char>& scratch);
+
 class MissionGraph {
  public:
   static constexpr std::uint32_t kInfinity = std::numeric_limits<std::uint32_t>::max();

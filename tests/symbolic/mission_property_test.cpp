@@ -207,7 +207,7 @@ RunResult drive(MissionController& mc, const std::string& initial,
   std::string held = initial;
   auto held_name = [&mc] {
     const std::size_t h = mc.held_letter();
-    return h == 0 ? std::string() : mc.automaton().alphabet.aps().at(h - 1);
+    return h == 0 ? std::string() : mc.aps().at(h - 1);
   };
   auto perform = [&](const std::string& expected) -> bool {
     // Performs one action (reporting infeasible ones) until one succeeds. Returns false when
@@ -453,6 +453,7 @@ struct Tally {
   std::size_t committed = 0;  // B: infeasible after a prefix, satisfiable from the start
   std::size_t reports = 0;    // infeasible actions reported
   std::size_t failures = 0;
+  std::size_t product = 0;        // formulas run in the product form (symbolic/mission_product.h)
   std::size_t word_letters = 0;   // |π0 a1 … ak| + |b1 … bm| over lassos and idle endings
   std::size_t lasso_letters = 0;  // the same over lassos only
   double seconds = 0.0;
@@ -475,6 +476,7 @@ void check_case(const Case& c, Tally& t) {
     fail(t, describe(c) + ": the controller rejected the formula: " + e.what());
     return;
   }
+  if (mc->product_form()) ++t.product;
   const std::set<std::string> infeasible(c.infeasible.begin(), c.infeasible.end());
   RunResult r;
   try {
@@ -506,7 +508,10 @@ void check_case(const Case& c, Tally& t) {
       std::ostringstream s;
       s << describe(c) << "\n  " << describe(r, c.initial) << "\n  word " << w.to_string()
         << ": the evaluator says it does NOT satisfy the formula (the controller's automaton "
-        << (test_support::accepts(mc->automaton(), w) ? "accepts" : "rejects") << " it)";
+        << (mc->product_form()                          ? "is in the product form"
+            : test_support::accepts(mc->automaton(), w) ? "accepts"
+                                                        : "rejects")
+        << " it)";
       fail(t, s.str());
     }
     return;
@@ -572,7 +577,8 @@ void print(const char* name, const Tally& t) {
             << ratio(t.word_letters, t.lassos + t.idles) << "), infeasible verdicts "
             << t.infeasible << " (confirmed empty from the start " << t.confirmed
             << ", empty only after the performed prefix " << t.committed << "), infeasible reports "
-            << t.reports << ", failures " << t.failures << ", " << t.seconds << " s\n";
+            << t.reports << ", product form " << t.product << ", failures " << t.failures << ", "
+            << t.seconds << " s\n";
 }
 
 // ---------------------------------------------------------------------------------------
@@ -683,6 +689,12 @@ TEST(MissionPropertyTest, PastFailures) {
       // Random case 689 of property B: move(l2) fails, move(l1) is taken instead, and G is
       // rebuilt from the G F move(l2) branch's state; none · move(l1)^ω satisfies F G move(l1).
       {"F F (G G F move(l2) | G move(l1))", "", {"move(l2)"}},
+      // The product form once took conjunctions with negation (random cases 788 and 2313 of
+      // property A): G F !move(l2) alone, holding π0 = move(l2) or after acting, cannot read
+      // the empty symbol its own G never holds again, so the part was called infeasible while
+      // move(l2) then release(M1,l1), move(l2) forever satisfies the whole formula.
+      {"F move(l2) & G F (release(M1,l1) U !release(M1,l1)) & G F F !move(l2)", "move(l2)", {}},
+      {"F F F move(l2) & G F !move(l2) & G F (release(M1,l2) | !move(l1))", "", {}},
   };
   for (std::size_t i = 0; i < corpus.size(); ++i) {
     Case c;
@@ -703,6 +715,7 @@ TEST(MissionPropertyTest, PropertyA_PerfectExecutor) {
   EXPECT_EQ(t.failures, 0u);
   EXPECT_EQ(t.reports, 0u);
   EXPECT_GT(t.lassos, 0u);
+  EXPECT_GT(t.product, 0u);
 }
 
 // (C) The paper's G (Appendix I-B exactly, GraphMode::kPaper) on the same formulas without
@@ -764,6 +777,7 @@ TEST(MissionPropertyTest, PropertyB_InfeasibleActions) {
   EXPECT_GE(t.formulas, test_support::scaled(kNumFormulas));
   EXPECT_EQ(t.failures, 0u);
   EXPECT_GT(t.reports, 0u);
+  EXPECT_GT(t.product, 0u);
 }
 
 }  // namespace
