@@ -95,7 +95,7 @@ std::string read_file(const std::string& path) {
 int run_merge(const SweepArgs& a) {
   const std::vector<std::string>& dirs = a.merge_dirs;
   const std::string& out = a.merge_out;
-  const experiment::MergeSummary m = experiment::merge_sweeps(dirs, out);
+  const experiment::MergeSummary m = experiment::merge_sweeps(dirs, out, registry());
   std::printf(
       "merged %zu folders into %s: %zu of %zu trials (%zu duplicates, %zu cut lines dropped)\n",
       dirs.size(), out.c_str(), m.rows, m.total_trials, m.duplicates, m.dropped_torn);

@@ -26,7 +26,7 @@ LogLayout::LogLayout(const std::vector<std::string>& header, const std::string& 
       index.erase(it);
       continue;
     }
-    if (!is_timing_column(name)) throw Error(refused + "it has no column '" + name + "'");
+    if (!may_be_missing(name)) throw Error(refused + "it has no column '" + name + "'");
     missing_.push_back(name);
     source_.push_back(-1);
   }

@@ -2,8 +2,10 @@
 // README.md, "Trial log"). A later version may add timing columns (is_timing_column: measured
 // by the clock, never part of a result, as first_action_time_s was); a log written before such a
 // column existed reads with it empty, so that an older sweep folder can still be resumed,
-// merged and reported. Any other difference refuses the log: a result column missing, a column
-// this version does not know, a column named twice.
+// merged and reported; so does goal_order, a descriptive column (the resume key names the
+// order): empty in a row of an older log, whose task was always the chain. Any other difference
+// refuses the log: a result column missing, a column this version does not know, a column named
+// twice.
 #pragma once
 
 #include <cstddef>

@@ -33,6 +33,10 @@ class Method {
   virtual std::string name() const = 0;
   // One line for `rearm sweep --help` and the OMPL log's planner settings.
   virtual std::string summary() const = 0;
+  // Whether the method follows the order the task's formula imposes (rearm: its mission
+  // controller reads the formula) or solves the final arrangement in any order (the
+  // baselines): a sweep's goal orders multiply only the trials of the former.
+  virtual bool follows_task_order() const { return false; }
   // Runs the scenario. Expected outcomes are values; a throw becomes an `error` row.
   virtual TrialOutcome run(const scenario::Scenario& s, const MethodInput& in) const = 0;
 };

@@ -38,6 +38,7 @@ struct Variant {
 class RearmMethod final : public Method {
  public:
   explicit RearmMethod(Variant v) : v_(std::move(v)) {}
+  bool follows_task_order() const override { return true; }
   std::string name() const override { return v_.name; }
   std::string summary() const override { return v_.summary; }
 

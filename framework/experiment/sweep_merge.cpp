@@ -93,13 +93,16 @@ std::string merged_cells(const std::vector<std::string>& dirs) {
 
 }  // namespace
 
-MergeSummary merge_sweeps(const std::vector<std::string>& dirs, const std::string& out_dir) {
+MergeSummary merge_sweeps(const std::vector<std::string>& dirs, const std::string& out_dir,
+                          const MethodRegistry& methods) {
   if (dirs.empty()) throw Error("merge: give at least one sweep folder");
   MergeSummary summary;
   const std::string spec = read_all(fs::path(dirs.front()) / kSweepCopy);
   const scenario::SweepFile file =
       scenario::parse_sweep_file(spec, (fs::path(dirs.front()) / kSweepCopy).string());
-  summary.total_trials = file.trial_count();
+  summary.total_trials = file.trial_count([&](const std::string& m) {
+    return methods.contains(m) && methods.get(m).follows_task_order();
+  });
   const std::size_t key = trial_column("key");
   const std::size_t index = trial_column("trial");
   std::map<std::string, std::vector<std::string>> rows;

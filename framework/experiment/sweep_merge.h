@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "experiment/method.h"
+
 namespace rearm::experiment {
 
 struct MergeSummary {
@@ -18,7 +20,9 @@ struct MergeSummary {
 };
 
 // Throws rearm::Error naming the folder for a folder without sweep.yaml or trials.csv, sweep
-// files that differ, a damaged CSV, or conflicting rows for one trial.
-MergeSummary merge_sweeps(const std::vector<std::string>& dirs, const std::string& out_dir);
+// files that differ, a damaged CSV, or conflicting rows for one trial. `methods` tells which of
+// the sweep's methods follow the task's order (the total counts them once per goal order).
+MergeSummary merge_sweeps(const std::vector<std::string>& dirs, const std::string& out_dir,
+                          const MethodRegistry& methods);
 
 }  // namespace rearm::experiment

@@ -1,5 +1,6 @@
 #include "experiment/sweep_plan.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cstdio>
 #include <functional>
@@ -85,6 +86,7 @@ std::string cell_name(const InstanceJob& job) {
                 s.objects, s.obstacle_density, s.width, s.unknown_fraction,
                 s.round_unknown ? "round" : "polygon");
   std::string name = buf;
+  if (s.goal_order == scenario::GoalOrder::kAny) name += "_any";  // chain: the name as before
   for (char& c : name) {
     if (c == '+') c = 'p';
   }
@@ -107,38 +109,51 @@ SweepPlan plan_sweep(const scenario::SweepFile& f, const MethodRegistry& methods
   SweepPlan plan;
   plan.name = f.name;
   const std::vector<scenario::WorkspaceRule> workspaces = f.workspaces();
+  // A method that ignores the order runs once per geometry: in the `any` cell when the sweep
+  // has one, else in each (then its only) order's cell.
+  const bool has_any = std::find(f.goal_orders.begin(), f.goal_orders.end(),
+                                 scenario::GoalOrder::kAny) != f.goal_orders.end();
   for (const scenario::GoalClass c : f.classes)
     for (const int n : f.objects)
       for (const scenario::WorkspaceRule& w : workspaces)
         for (const double density : f.densities)
           for (const double unknown : f.unknown_fractions)
             for (const bool round : f.round_unknown)
-              for (int rep = 0; rep < f.seeds; ++rep) {
-                InstanceJob job;
-                job.index = plan.instances.size();
-                job.cell = job.index / static_cast<std::size_t>(f.seeds);
-                job.spec = cell_spec(f, w, c, n, density, unknown, round);
-                job.spec.seed = instance_seed(f.base_seed, n, rep);
-                job.rep = rep;
-                job.workspace_rule = w.describe();
-                for (const std::string& m : f.methods) {
-                  // "NAME@K": its own budget; the seed is NAME's, so one planner at two budgets
-                  // runs the same search, cut at two points.
-                  const scenario::MethodEntry e = scenario::method_entry(m);
-                  TrialJob t;
-                  t.index = plan.trials.size();
-                  t.instance = job.index;
-                  t.settings = TrialSettings{m,
-                                             job.spec,
-                                             rep,
-                                             job.workspace_rule,
-                                             planner_seed(job.spec.seed, e.method),
-                                             f.time_limit,
-                                             e.query_limit.value_or(f.query_limit)};
-                  plan.trials.push_back(std::move(t));
+              for (const scenario::GoalOrder order : f.goal_orders)
+                for (int rep = 0; rep < f.seeds; ++rep) {
+                  InstanceJob job;
+                  job.index = plan.instances.size();
+                  job.cell = job.index / static_cast<std::size_t>(f.seeds);
+                  job.spec = cell_spec(f, w, c, n, density, unknown, round);
+                  job.spec.goal_order = order;
+                  job.spec.seed = instance_seed(f.base_seed, n, rep);  // the same for each order
+                  job.rep = rep;
+                  job.workspace_rule = w.describe();
+                  for (const std::string& m : f.methods) {
+                    // "NAME@K": its own budget; the seed is NAME's, so one planner at two budgets
+                    // runs the same search, cut at two points.
+                    const scenario::MethodEntry e = scenario::method_entry(m);
+                    if (has_any && order != scenario::GoalOrder::kAny &&
+                        !methods.get(e.method).follows_task_order()) {
+                      continue;
+                    }
+                    TrialJob t;
+                    t.index = plan.trials.size();
+                    t.instance = job.index;
+                    t.settings = TrialSettings{m,
+                                               job.spec,
+                                               rep,
+                                               job.workspace_rule,
+                                               planner_seed(job.spec.seed, e.method),
+                                               f.time_limit,
+                                               e.query_limit.value_or(f.query_limit),
+                                               methods.get(e.method).follows_task_order()
+                                                   ? scenario::to_string(order)
+                                                   : "any"};
+                    plan.trials.push_back(std::move(t));
+                  }
+                  plan.instances.push_back(std::move(job));
                 }
-                plan.instances.push_back(std::move(job));
-              }
   plan.total_trials = plan.trials.size();
   return plan;
 }

@@ -1,13 +1,15 @@
 // A sweep file expanded into its instances and trials (experiments/sweeps/README.md):
 // cells = classes × object counts × workspaces (footprints) × target densities × unknown
-// fractions × unknown shapes, each
-// with `seeds` repetitions (one instance each), each instance run by every method (one trial
-// each). Indices are canonical (that order), so a trial's index, seeds and settings depend on
-// the sweep file alone — not on the thread count, the shard or the order trials finish in.
+// fractions × unknown shapes × goal orders, each with `seeds` repetitions (one instance each),
+// each instance run by every method (one trial each) but that a method which ignores the order
+// (Method::follows_task_order false) runs only the `any` cell's instance when there is one. Indices
+// are canonical (that order), so a trial's index, seeds and settings depend on the sweep file alone
+// — not on the thread count, the shard or the order trials finish in.
 //
 // Seeds (house style: every draw from a seeded generator): an instance's seed is derived from (base
 // seed, N, repetition) only, so that the cells of one N share their random draws (common random
-// numbers): the same object starts, goals and robot in every class, density and shape mix —
+// numbers): the same object starts, goals and robot in every class, goal order, density and
+// shape mix —
 // the generator keeps one random stream per placement stage — and the comparisons between
 // densities or classes are paired. A trial's planner seed is derived from (instance seed,
 // method name).

@@ -57,6 +57,11 @@ std::string resume_key(const TrialSettings& s) {
   k += ";planner_seed=" + std::to_string(s.planner_seed);
   k += ";time_limit=" + num(s.time_limit_s);
   k += ";query_limit=" + std::to_string(s.query_limit);
+  // The task's order, named only when it is not the chain, so that the keys of sweeps written
+  // before the dimension existed are unchanged.
+  if (i.goal_order != scenario::GoalOrder::kChain) {
+    k += ";goal_order=" + std::string(scenario::to_string(i.goal_order));
+  }
   return k;
 }
 

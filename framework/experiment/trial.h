@@ -96,6 +96,9 @@ struct TrialSettings {
   std::uint64_t planner_seed = 0;
   double time_limit_s = 0;
   long query_limit = 0;  // the baselines' motion queries (0: none)
+  // The order the method solved the task in (the goal_order column): the instance's for a
+  // method that follows the formula's order, "any" for one that ignores it.
+  std::string goal_order = "chain";
 };
 
 // The instance as generated (filled by the runner from scenario::generate_instance).

@@ -51,6 +51,7 @@ void settings_fields(const TrialRecord& r, std::vector<std::string>& f) {
   f.push_back(r.sweep);
   f.push_back(s.method);
   f.push_back(scenario::to_string(i.goal_class));
+  f.push_back(s.goal_order);
   f.push_back(integer(i.objects));
   f.push_back(exact(i.obstacle_density));
   f.push_back(exact(r.instance.achieved_density));
@@ -118,6 +119,7 @@ const std::vector<std::string>& trial_columns() {
                                                    "sweep",
                                                    "method",
                                                    "class",
+                                                   "goal_order",
                                                    "objects",
                                                    "target_density",
                                                    "achieved_density",
@@ -211,6 +213,10 @@ std::vector<std::string> trial_fields(const TrialRecord& r) {
 }
 
 std::string trial_row(const TrialRecord& r) { return csv_line(trial_fields(r)); }
+
+bool may_be_missing(const std::string& name) {
+  return is_timing_column(name) || name == "goal_order";
+}
 
 bool is_timing_column(const std::string& name) {
   for (const char* c : kTimingColumns) {

@@ -27,6 +27,9 @@ std::vector<std::string> recovery_names();
 // Columns that differ between runs of the same trial: wall-clock times, CPU time, host,
 // CPU model and revision.
 bool is_timing_column(const std::string& name);
+// A column a log of an earlier version may lack (log_layout.h): the timing and provenance ones,
+// and goal_order (added with the goal-order dimension; such a log's tasks were all chains).
+bool may_be_missing(const std::string& name);
 
 // The `key` column: 16 hex digits of FNV-1a 64 over resume_key(settings).
 std::string key_column(const TrialSettings& s);

@@ -703,10 +703,17 @@ class Generator {
   }
 
   std::string task() const {
-    // Formula (1) of the paper extended to N objects (as fig5): innermost release first.
     const int n = spec_.objects;
     auto object = [](int i) { return "M" + std::to_string(i); };
     auto region = [](int i) { return "l" + std::to_string(i); };
+    if (spec_.goal_order == GoalOrder::kAny) {
+      std::string f;
+      for (int i = 1; i <= n; ++i) {
+        f += (i > 1 ? " && " : "") + std::string("<>release(") + object(i) + "," + region(i) + ")";
+      }
+      return f;
+    }
+    // Formula (1) of the paper extended to N objects (as fig5): innermost release first.
     std::string f = "<>release(" + object(n) + "," + region(n) + ")";
     for (int i = n; i >= 1; --i) {
       if (i < n) f = "<>(release(" + object(i) + "," + region(i) + ") && " + f + ")";
@@ -718,7 +725,8 @@ class Generator {
   Scenario scenario() const {
     Scenario s;
     s.name = std::string("random_") + to_string(spec_.goal_class) + "_n" +
-             std::to_string(spec_.objects) + "_s" + std::to_string(spec_.seed);
+             std::to_string(spec_.objects) + "_s" + std::to_string(spec_.seed) +
+             (spec_.goal_order == GoalOrder::kAny ? "_any" : "");
     s.source = "";
     s.workspace = rectangle(0, 0, l_.width, l_.height);
     s.robot.radius = spec_.robot_radius;
@@ -847,6 +855,15 @@ GoalClass goal_class_from_string(std::string_view text) {
   }
   throw Error("goal class: unknown '" + std::string(text) +
               "' (expected 'random', 'cyclic' or 'sealed')");
+}
+
+const char* to_string(GoalOrder o) { return o == GoalOrder::kAny ? "any" : "chain"; }
+
+GoalOrder goal_order_from_string(std::string_view text) {
+  for (const GoalOrder o : {GoalOrder::kChain, GoalOrder::kAny}) {
+    if (text == to_string(o)) return o;
+  }
+  throw Error("goal order: unknown '" + std::string(text) + "' (expected 'chain' or 'any')");
 }
 
 namespace {

@@ -135,6 +135,15 @@ const char* to_string(GoalClass c);  // "random", "cyclic", "sealed"
 // The inverse of to_string; throws rearm::Error on any other text.
 GoalClass goal_class_from_string(std::string_view text);
 
+// The task's order, a sweep dimension (`goal_orders`). kChain: formula (1) of the paper
+// extended to N objects (grasp M1, release it in l1, then M2, ...), the order fixed as the
+// paper writes its rearrangement tasks; kAny: <>release(M1,l1) && ... && <>release(MN,lN),
+// every object in its region, in any order (the final arrangement the baselines solve).
+enum class GoalOrder { kChain, kAny };
+const char* to_string(GoalOrder o);  // "chain", "any"
+// The inverse of to_string; throws rearm::Error on any other text.
+GoalOrder goal_order_from_string(std::string_view text);
+
 // Input ranges, part of the contract below.
 inline constexpr int kMaxInstanceObjects = 64;
 inline constexpr double kMaxObstacleDensity = 0.5;
@@ -158,6 +167,7 @@ struct InstanceSpec {
   int objects = 3;                // N, in [1, kMaxInstanceObjects]
   double obstacle_density = 0.1;  // target fixed-obstacle area / workspace area, [0, 0.5]
   GoalClass goal_class = GoalClass::kRandom;
+  GoalOrder goal_order = GoalOrder::kChain;  // the task's formula only: same geometry either way
   std::uint64_t seed = 0;
   double unknown_fraction = 0.5;  // probability that a new obstacle is unknown, in [0, 1]
   // Unknown obstacles are ellipses (48-gons, aspect <= 1.5), strongly convex as the paper

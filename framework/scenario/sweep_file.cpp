@@ -199,6 +199,18 @@ void read_lists(Reader& r, const Fields& f, SweepFile& s) {
                                      r.fail(p, e.what());
                                    }
                                  });
+  if (const auto v = f.find("goal_orders")) {
+    s.goal_orders =
+        list_of<GoalOrder>(r, *v, "goal_orders", [&](const YAML::Node& n, const std::string& p) {
+          try {
+            return goal_order_from_string(r.text(n, p));
+          } catch (const ScenarioError&) {
+            throw;
+          } catch (const Error& e) {
+            r.fail(p, e.what());
+          }
+        });
+  }
   s.objects = list_of<int>(r, f.require("objects"), "objects",
                            [&](const YAML::Node& n, const std::string& p) {
                              return int_in_range(r, n, p, 1, kMaxInstanceObjects);
@@ -227,10 +239,11 @@ void read_lists(Reader& r, const Fields& f, SweepFile& s) {
 }
 
 SweepFile read_sweep(Reader& r, const YAML::Node& doc) {
-  const Fields f(r, doc, "",
-                 {"name", "description", "methods", "classes", "objects", "densities", "workspace",
-                  "footprint_densities", "unknown_fraction", "unknown_shapes", "seeds",
-                  "time_limit", "query_limit", "base_seed", "instance", "refused_cells"});
+  const Fields f(
+      r, doc, "",
+      {"name", "description", "methods", "classes", "goal_orders", "objects", "densities",
+       "workspace", "footprint_densities", "unknown_fraction", "unknown_shapes", "seeds",
+       "time_limit", "query_limit", "base_seed", "instance", "refused_cells", "role"});
   SweepFile s;
   s.source = r.source();
   s.name = r.text(f.require("name"), "name");
@@ -263,6 +276,12 @@ SweepFile read_sweep(Reader& r, const YAML::Node& doc) {
   }
   if (const auto v = f.find("base_seed")) s.base_seed = unsigned64(r, *v, "base_seed");
   if (const auto v = f.find("instance")) read_instance(r, *v, s.instance);
+  if (const auto v = f.find("role")) {
+    s.role = r.text(*v, "role");
+    if (s.role != "tuning" && s.role != "test") {
+      r.fail("role", "expected tuning or test, got '" + s.role + "'");
+    }
+  }
   if (const auto v = f.find("refused_cells")) {
     const std::string t = r.text(*v, "refused_cells");
     if (t != "error" && t != "skip")
@@ -334,10 +353,16 @@ std::vector<WorkspaceRule> SweepFile::workspaces() const {
   return out;
 }
 
-std::size_t SweepFile::trial_count() const {
+std::size_t SweepFile::trial_count(
+    const std::function<bool(const std::string& method)>& follows_order) const {
+  std::size_t per_instance = 0;  // trials per geometry, over its goal orders
+  for (const std::string& m : methods) {
+    const bool follows = !follows_order || follows_order(method_entry(m).method);
+    per_instance += follows ? goal_orders.size() : 1;
+  }
   return classes.size() * objects.size() * std::max<std::size_t>(1, footprints.size()) *
          densities.size() * unknown_fractions.size() * round_unknown.size() *
-         static_cast<std::size_t>(seeds) * methods.size();
+         static_cast<std::size_t>(seeds) * per_instance;
 }
 
 SweepFile parse_sweep_file(const std::string& yaml, const std::string& source) {

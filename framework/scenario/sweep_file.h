@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <optional>
 #include <string>
@@ -38,12 +39,19 @@ struct WorkspaceRule {
 struct SweepFile {
   std::string name;  // file-name safe: it names the output
   std::string description;
+  // `role`: "tuning" (behaviour changes are measured on its seeds) or "test" (it carries claims;
+  // its base seed no change was measured on); "" when the file does not say.
+  std::string role;
   std::string source;  // the file it was read from
   // Checked against the method registry by the caller. An entry "NAME@K" runs method NAME with
   // its own budget of K motion queries (MethodEntry), so the same planner can run at several
   // budgets in one sweep; the rows' method column keeps the entry as written.
   std::vector<std::string> methods;
   std::vector<GoalClass> classes;
+  // The task's order (`goal_orders`, default [chain]): a dimension of the cells for the methods
+  // that follow the formula's order (rearm); a method that solves the final arrangement in any
+  // order (the baselines) runs once per instance, in its `any` cell when the list has it.
+  std::vector<GoalOrder> goal_orders = {GoalOrder::kChain};
   std::vector<int> objects;
   std::vector<double> densities;  // target obstacle densities
   WorkspaceRule workspace;
@@ -63,8 +71,10 @@ struct SweepFile {
 
   // The workspace rule of each footprint, in file order, or the one rule.
   std::vector<WorkspaceRule> workspaces() const;
-  // Cells × repetitions × methods.
-  std::size_t trial_count() const;
+  // Cells × repetitions × methods, a method that ignores the order (follows_order false) counted
+  // once per instance; without follows_order every method follows it (an upper bound).
+  std::size_t trial_count(
+      const std::function<bool(const std::string& method)>& follows_order = {}) const;
 };
 
 // A methods entry: the method's registry name and, for "NAME@K", its own query budget.

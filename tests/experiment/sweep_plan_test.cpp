@@ -148,6 +148,52 @@ TEST(SweepPlan, FootprintDensitiesAddCellsAndKeepTheSingleRulesTrials) {
   EXPECT_EQ(three.instances[3].spec.objects, 2);
 }
 
+// goal_orders [chain, any]: a cell per order, the same geometry (instance seed) in both;
+// rearm runs both, a method that ignores the order (the stub) only the `any` instance, its row
+// saying "any"; the chain cell keeps the name and key of a sweep without the dimension.
+TEST(SweepPlan, GoalOrdersMultiplyOnlyTheOrderFollowingMethods) {
+  const std::string head =
+      "name: p\nmethods: [rearm, birrt]\nclasses: [cyclic]\nobjects: [3]\ndensities: [0.05]\n"
+      "workspace: {side: 8}\nseeds: 2\nbase_seed: 5\n";
+  const SweepPlan chain = plan_sweep(scenario::parse_sweep_file(head), registry());
+  const SweepPlan both =
+      plan_sweep(scenario::parse_sweep_file(head + "goal_orders: [chain, any]\n"), registry());
+  ASSERT_EQ(both.instances.size(), 4u);
+  EXPECT_EQ(both.total_trials, 2u * 2 + 2);
+  EXPECT_EQ(both.total_trials, scenario::parse_sweep_file(head + "goal_orders: [chain, any]\n")
+                                   .trial_count([](const std::string& m) { return m == "rearm"; }));
+  std::map<std::string, int> rows;  // method/goal_order -> trials
+  for (const TrialJob& t : both.trials) {
+    const InstanceJob& j = both.instances[t.instance];
+    EXPECT_EQ(t.settings.instance.goal_order, j.spec.goal_order);
+    if (t.settings.method == "birrt") {
+      EXPECT_EQ(j.spec.goal_order, scenario::GoalOrder::kAny);
+    }
+    ++rows[t.settings.method + "/" + t.settings.goal_order];
+  }
+  EXPECT_EQ(rows,
+            (std::map<std::string, int>{{"birrt/any", 2}, {"rearm/any", 2}, {"rearm/chain", 2}}));
+  for (int rep = 0; rep < 2; ++rep) {
+    const InstanceJob& c = both.instances[static_cast<std::size_t>(rep)];
+    const InstanceJob& a = both.instances[static_cast<std::size_t>(2 + rep)];
+    EXPECT_EQ(c.spec.seed, a.spec.seed);  // one geometry, two tasks
+    EXPECT_EQ(cell_name(a), cell_name(c) + "_any");
+    EXPECT_EQ(instance_name(c), instance_name(chain.instances[static_cast<std::size_t>(rep)]));
+    auto rearm_trial = [](const SweepPlan& p, std::size_t instance) {
+      for (const TrialJob& t : p.trials) {
+        if (t.instance == instance && t.settings.method == "rearm") return t.settings;
+      }
+      return TrialSettings{};
+    };
+    EXPECT_EQ(resume_key(rearm_trial(both, c.index)), resume_key(rearm_trial(chain, c.index)));
+    EXPECT_NE(resume_key(rearm_trial(both, a.index)), resume_key(rearm_trial(chain, c.index)));
+  }
+  // Without `any`, the baseline runs the chain cell; its row still says "any".
+  EXPECT_EQ(chain.trials[1].settings.method, "birrt");
+  EXPECT_EQ(chain.trials[1].settings.goal_order, "any");
+  EXPECT_EQ(chain.trials[0].settings.goal_order, "chain");
+}
+
 TEST(SweepPlan, UnknownMethodsNameTheirKey) {
   scenario::SweepFile f = file();
   f.methods.push_back("rrtstar");

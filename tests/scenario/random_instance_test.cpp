@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "ltl/parser.h"
 #include "scenario/scenario_io.h"
 #include "support/geometry_oracle.h"
 #include "support/scale.h"
@@ -253,6 +254,34 @@ TEST(RandomInstance, GoalClassNames) {
   for (const GoalClass c : kClasses) EXPECT_EQ(goal_class_from_string(to_string(c)), c);
   EXPECT_STREQ(to_string(GoalClass::kSealed), "sealed");
   EXPECT_THROW(goal_class_from_string("Sealed"), Error);
+}
+
+// The goal order changes the task's formula only: the same geometry, and for `any` the
+// conjunction of every object's eventual release in its own region, whose parts are the objects
+// (read back by the LTL parser, independent of the generator's text).
+TEST(RandomInstance, GoalOrderChangesOnlyTheTask) {
+  EXPECT_EQ(goal_order_from_string("any"), GoalOrder::kAny);
+  EXPECT_STREQ(to_string(GoalOrder::kChain), "chain");
+  EXPECT_THROW(goal_order_from_string("Any"), Error);
+  for (const GoalClass c : kClasses) {
+    InstanceSpec spec = make_spec(4, c, 0.1, 3);
+    Scenario chain = random_instance(spec);
+    spec.goal_order = GoalOrder::kAny;
+    Scenario any = random_instance(spec);
+    EXPECT_EQ(any.name, chain.name + "_any");
+    const ltl::Formula f = ltl::parse(any.task);
+    ASSERT_EQ(f.op(), ltl::Op::And);
+    ASSERT_EQ(f.children().size(), 4u);
+    for (int i = 0; i < 4; ++i) {
+      const std::string k = std::to_string(i + 1);
+      EXPECT_EQ(f.child(static_cast<std::size_t>(i)),
+                ltl::Formula::eventually(ltl::Formula::ap("release(M" + k + ",l" + k + ")")));
+    }
+    EXPECT_NE(chain.task, any.task);
+    chain.name = any.name;
+    chain.task = any.task;
+    EXPECT_EQ(to_yaml(chain), to_yaml(any));
+  }
 }
 
 // Crowded fallback (random_instance.h): a 3.50 m room (N = 4 sealed, footprint 0.08) cannot hold

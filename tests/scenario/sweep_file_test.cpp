@@ -107,6 +107,29 @@ TEST(SweepFile, FootprintDensitiesAreAGridDimension) {
                "gives a side of 443.");
 }
 
+// `goal_orders`: the chain by default; a method that ignores the order is counted once per
+// instance when the caller says which methods follow it.
+TEST(SweepFile, GoalOrdersAreADimensionOfTheOrderFollowingMethods) {
+  const std::string head =
+      "name: s\nmethods: [rearm, birrt, rearm-paper]\nclasses: [random]\nobjects: [4]\n"
+      "densities: [0.1]\nworkspace: {side: 8}\nseeds: 5\n";
+  const SweepFile chain = parse_sweep_file(head);
+  EXPECT_EQ(chain.goal_orders, (std::vector<GoalOrder>{GoalOrder::kChain}));
+  const SweepFile both = parse_sweep_file(head + "goal_orders: [chain, any]\n");
+  EXPECT_EQ(both.goal_orders, (std::vector<GoalOrder>{GoalOrder::kChain, GoalOrder::kAny}));
+  auto rearm_only = [](const std::string& m) { return m.rfind("rearm", 0) == 0; };
+  EXPECT_EQ(chain.trial_count(rearm_only), 5u * 3);
+  EXPECT_EQ(both.trial_count(rearm_only), 5u * (2 * 2 + 1));
+  EXPECT_EQ(both.trial_count(), 5u * 3 * 2);  // every method following: the upper bound
+  expect_error(head + "goal_orders: [chain, anyy]\n", "goal_orders[1]", "unknown 'anyy'");
+  expect_error(head + "goal_orders: [any, any]\n", "goal_orders[1]", "repeated");
+  expect_error(head + "goal_orders: []\n", "goal_orders", "");
+  // `role`: what the seeds are for.
+  EXPECT_EQ(chain.role, "");
+  EXPECT_EQ(parse_sweep_file(head + "role: test\n").role, "test");
+  expect_error(head + "role: tuned\n", "role", "expected tuning or test");
+}
+
 TEST(SweepFile, BadInputNamesTheKey) {
   expect_error(kBase, "workspace", "required key is missing");
   expect_error(kBase + "workspace: {side: 10}\nseed: 3\n", "seed", "unknown key");
