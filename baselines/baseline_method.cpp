@@ -18,6 +18,7 @@ TrialStatus status_of(const std::string& s) {
   if (s == "infeasible") return TrialStatus::kInfeasible;
   if (s == "unsolved") return TrialStatus::kUnsolved;
   if (s == "timeout") return TrialStatus::kTimeout;
+  if (s == "timeout_wall") return TrialStatus::kTimeoutWall;
   if (s == "invalid_plan") return TrialStatus::kInvalidPlan;
   if (s == "failed") return TrialStatus::kFailed;
   REARM_DEMAND(false, "baseline status '" + s + "' has no trial status");
@@ -64,6 +65,7 @@ class BaselineMethod final : public experiment::Method {
     out.goals_reached = r.executed && experiment::goals_reached(s, e.objects_end);
     out.plans_offline = true;
     out.compute.planning_s = r.planning_time_s;
+    out.planning_wall_s = r.planning_wall_s;
     out.first_action_s = r.first_action_time_s;
     out.wall_time_s = r.wall_time_s;
     out.sim_time_s = e.sim_time;

@@ -74,6 +74,8 @@ class Birrt {
       from_start = !from_start;
     }
     out.planning_time_s = ctx_.elapsed();
+    out.planning_wall_s = ctx_.wall_elapsed();
+    out.wall_net = ctx_.cut_by_wall();
     out.subqueries = ctx_.subqueries;
     out.arrangement_nodes = static_cast<long>(start_.size() + goal_.size());
     out.nodes = ctx_.nodes + out.arrangement_nodes;

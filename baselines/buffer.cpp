@@ -401,6 +401,8 @@ bool BufferPlanner::finish(Walk w) {
 PlanResult BufferPlanner::result(bool solved) {
   PlanResult out;
   out.planning_time_s = ctx_.elapsed();
+  out.planning_wall_s = ctx_.wall_elapsed();
+  out.wall_net = ctx_.cut_by_wall();
   out.subqueries = ctx_.subqueries;
   out.nodes = ctx_.nodes;
   out.queries = ctx_.queries;

@@ -11,8 +11,10 @@
 #include <ompl/geometric/planners/rrt/RRTConnect.h>
 #include <ompl/util/Console.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <memory>
 #include <mutex>
 
@@ -27,6 +29,9 @@ namespace rearm::baselines {
 using geometry::Point;
 
 namespace {
+
+// How many OMPL termination checks pass between two reads of the budget's clocks.
+constexpr unsigned kBudgetCheckStride = 16;
 
 // OMPL's console output would flood sweeps with one line per query; errors still show.
 void quiet_ompl() {
@@ -118,22 +123,29 @@ const char* to_string(QueryStatus s) {
   return "?";
 }
 
+double thread_cpu_seconds() {
+  timespec t{};
+  REARM_DEMAND(clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t) == 0, "no thread CPU clock");
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
 QueryContext::QueryContext(double time_limit, std::uint64_t seed, long max_queries)
     : seed_(seed), max_queries_(max_queries) {
   if (max_queries < 0) throw Error("the query limit must be >= 0");
   if (!std::isfinite(time_limit) || time_limit <= 0)
     throw Error("time limit must be a positive finite number of seconds");
+  limit_ = time_limit;
+  cpu_start_ = thread_cpu_seconds();
   start_ = Clock::now();
-  deadline_ = start_ + std::chrono::duration_cast<Clock::duration>(
-                           std::chrono::duration<double>(time_limit));
+  wall_deadline_ = start_ + std::chrono::duration_cast<Clock::duration>(
+                                std::chrono::duration<double>(kWallSafetyFactor * time_limit));
 }
 
-double QueryContext::remaining() const {
-  const auto now = Clock::now();
-  return now >= deadline_ ? 0.0 : std::chrono::duration<double>(deadline_ - now).count();
-}
+double QueryContext::remaining() const { return std::max(0.0, limit_ - elapsed()); }
 
-double QueryContext::elapsed() const {
+double QueryContext::elapsed() const { return thread_cpu_seconds() - cpu_start_; }
+
+double QueryContext::wall_elapsed() const {
   return std::chrono::duration<double>(Clock::now() - start_).count();
 }
 
@@ -205,8 +217,12 @@ QueryResult plan_motion(const DiskWorld& world, const std::vector<geometry::Disk
   ss.setup();
 
   ob::IterationTerminationCondition iterations(static_cast<unsigned>(ctx.iterations_per_query));
-  const ob::PlannerTerminationCondition ptc = ob::plannerOrTerminationCondition(
-      iterations, ob::timedPlannerTerminationCondition(ctx.remaining()));
+  // The trial's budget (the thread's CPU time, the wall-clock net), read every
+  // kBudgetCheckStride checks: a thread CPU clock read is a system call.
+  unsigned checks = 0;
+  const ob::PlannerTerminationCondition budget(
+      [&ctx, &checks] { return ++checks % kBudgetCheckStride == 0 && ctx.expired(); });
+  const ob::PlannerTerminationCondition ptc = ob::plannerOrTerminationCondition(iterations, budget);
   ss.solve(ptc);
   ob::PlannerData data(si);
   planner->getPlannerData(data);

@@ -20,19 +20,31 @@
 
 namespace rearm::baselines {
 
-// One planner run's budget, seeds and counters (one per trial; not shared between threads).
+// The wall-clock safety net of a planning budget: this many times the CPU time limit.
+inline constexpr double kWallSafetyFactor = 10;
+
+// CPU time (s) the calling thread has used (CLOCK_THREAD_CPUTIME_ID).
+double thread_cpu_seconds();
+
+// One planner run's budget, seeds and counters (one per trial; used by the thread that built
+// it only: its clock is that thread's CPU time).
 class QueryContext {
  public:
   using Clock = std::chrono::steady_clock;
-  // time_limit in s (> 0, finite); seed: the trial's.
+  // time_limit in s of the planning thread's CPU time (> 0, finite); seed: the trial's.
   // max_queries: the query budget (0: none), PlannerOptions::max_queries.
   QueryContext(double time_limit, std::uint64_t seed, long max_queries = 0);
-  // The time limit passed, or the query budget is spent.
-  bool expired() const { return out_of_queries() || Clock::now() >= deadline_; }
+  // The CPU time limit passed, the wall-clock safety net fired, or the query budget is spent.
+  bool expired() const { return out_of_queries() || elapsed() >= limit_ || wall_net_fired(); }
   bool out_of_queries() const { return max_queries_ > 0 && queries >= max_queries_; }
+  // The wall clock reached kWallSafetyFactor times the limit.
+  bool wall_net_fired() const { return Clock::now() >= wall_deadline_; }
+  // The safety net fired with CPU budget left: the machine, not the search, ended the run.
+  bool cut_by_wall() const { return wall_net_fired() && elapsed() < limit_; }
   long max_queries() const { return max_queries_; }
-  double remaining() const;  // s, >= 0
-  double elapsed() const;    // s since construction
+  double remaining() const;     // s of CPU time, >= 0
+  double elapsed() const;       // s of the thread's CPU time since construction
+  double wall_elapsed() const;  // s of wall time since construction
   // The next query's seed: a function of the trial seed and the query's index only.
   std::uint32_t next_seed();
   long queries = 0;                  // motion queries, straight-line checks included
@@ -41,7 +53,9 @@ class QueryContext {
   int iterations_per_query = 20000;  // RRTConnect iterations before a query gives up
 
  private:
-  Clock::time_point start_, deadline_;
+  double limit_ = 0;      // s of CPU time
+  double cpu_start_ = 0;  // the thread's CPU time at construction
+  Clock::time_point start_, wall_deadline_;
   std::uint64_t seed_;
   std::uint64_t counter_ = 0;
   long max_queries_ = 0;

@@ -114,6 +114,8 @@ MonotoneResult monotone_search(const MovePlanner& planner, const Arrangement& a,
 bool search_plan_result(const MonotoneResult& m, const QueryContext& ctx, double time_limit,
                         PlanResult& out) {
   out.planning_time_s = ctx.elapsed();
+  out.planning_wall_s = ctx.wall_elapsed();
+  out.wall_net = ctx.cut_by_wall();
   out.subqueries = ctx.subqueries;
   out.nodes = ctx.nodes;
   out.queries = ctx.queries;

@@ -52,9 +52,11 @@ struct PlanResult {
   PlanStatus status = PlanStatus::kTimeout;
   std::string reason;  // why not solved; for kInfeasible, the proof (e.g. "non-monotone ...")
   Plan plan;           // valid when solved
-  double planning_time_s = 0;
-  long subqueries = 0;  // OMPL motion queries (transit and transfer) posed
-  long nodes = 0;       // states in every RRTConnect tree, summed (+ arrangement nodes for B2)
+  double planning_time_s = 0;  // the planning thread's CPU time (what the budget counts)
+  double planning_wall_s = 0;  // wall time of the same
+  bool wall_net = false;       // kTimeout by the wall-clock safety net, not the CPU budget
+  long subqueries = 0;         // OMPL motion queries (transit and transfer) posed
+  long nodes = 0;  // states in every RRTConnect tree, summed (+ arrangement nodes for B2)
   long arrangement_nodes = 0;  // B2's two arrangement trees, summed
   long queries = 0;            // motion queries, straight-line checks included
 };

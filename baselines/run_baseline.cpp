@@ -61,6 +61,7 @@ ExecutionOptions execution_options(const scenario::Scenario& s, const BaselineOp
 
 void take_plan_stats(BaselineRecord& r, const PlanResult& p) {
   r.planning_time_s += p.planning_time_s;
+  r.planning_wall_s += p.planning_wall_s;
   r.subqueries += p.subqueries;
   r.nodes += p.nodes;
   r.arrangement_nodes += p.arrangement_nodes;
@@ -79,10 +80,13 @@ void set_status_from_plan(BaselineRecord& r, const PlanResult& p) {
       r.status = "unsolved";
       break;
     case PlanStatus::kTimeout:
-      r.status = "timeout";
+      r.status = p.wall_net ? "timeout_wall" : "timeout";
       break;
   }
   r.reason = p.reason;
+  if (p.wall_net) {
+    r.reason += " (cut by the wall-clock safety net with CPU budget left: the machine was loaded)";
+  }
 }
 
 void set_status_from_execution(BaselineRecord& r, const RearrangementProblem& p) {
@@ -155,13 +159,14 @@ bool continue_transfer(const RearrangementProblem& full, std::size_t i, const Ob
   MoveOutcome c =
       mp.transfer(sub.start, i, p0, pose.psi, move.to, to_goal ? region : std::nullopt, ctx);
   r.planning_time_s += ctx.elapsed();
+  r.planning_wall_s += ctx.wall_elapsed();
   r.subqueries += ctx.subqueries;
   r.queries += ctx.queries;
   r.nodes += ctx.nodes;
   if (!c.move) {
     // A spent query budget is the deterministic limit (unsolved), not the wall clock.
     const bool clock = c.failure == MoveFailure::kTimeout && !ctx.out_of_queries();
-    r.status = clock ? "timeout" : "unsolved";
+    r.status = !clock ? "unsolved" : ctx.cut_by_wall() ? "timeout_wall" : "timeout";
     r.reason =
         std::string("replan: the held object's transfer cannot be continued: ") +
         (ctx.out_of_queries() ? "query limit of " + std::to_string(o.query_limit) + " reached"
@@ -404,7 +409,8 @@ std::string baseline_metrics_json(const scenario::Scenario& s, const BaselineRec
   j["method"] = to_string(r.method);
   j["time_limit_s"] = r.time_limit;
   j["plan_status"] = to_string(r.plan_status);
-  j["planning_time_s"] = r.planning_time_s;
+  j["planning_time_s"] = r.planning_time_s;  // the planning thread's CPU time (budgeted)
+  j["planning_wall_s"] = r.planning_wall_s;
   j["subqueries"] = r.subqueries;
   j["nodes"] = r.nodes;
   j["arrangement_nodes"] = r.arrangement_nodes;

@@ -59,7 +59,8 @@ struct BaselineRecord {
   bool executed = false;
   ExecutionLog execution;
   int replans = 0;
-  double planning_time_s = 0;  // summed over replans
+  double planning_time_s = 0;  // the planning thread's CPU time, summed over replans (budgeted)
+  double planning_wall_s = 0;  // the wall time of the same
   // The planning time before the robot's first act: a valid plan is complete (the replanning
   // variant: its first one). NaN when no plan was executed (rearm's counterpart:
   // executive::TaskResult::first_action_time).

@@ -10,7 +10,7 @@ from sweep_data import density_bins, density_cells, ordered, pooled
 
 # The statuses in the order of a trial's life; a status not listed still gets a column, after.
 STATUS_ORDER = ["completed", "infeasible", "stuck", "timeout", "unsolved", "invalid_plan",
-                "failed", "error"]
+                "failed", "error", "timeout_wall"]
 MAX_LISTED = 4  # cells named in one finding
 MIN_BIN_TRIALS = 5  # trials a density bin needs to be quoted in the findings
 

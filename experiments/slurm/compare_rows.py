@@ -25,7 +25,8 @@ import sys
 
 # The columns `rearm sweep merge` also ignores when it checks two copies of a trial.
 IGNORED = {
-    "planning_time_s", "mission_time_s", "topology_time_s", "rebuild_time_s", "control_time_s",
+    "planning_time_s", "planning_wall_s", "mission_time_s", "topology_time_s", "rebuild_time_s",
+    "control_time_s",
     "compute_time_s", "first_action_time_s", "wall_time_s", "cpu_time_s", "revision", "host",
     "cpu_model", "finished_utc",
 }

@@ -9,8 +9,9 @@
 namespace rearm::experiment {
 namespace {
 
-constexpr const char* kStatusNames[kTrialStatusCount] = {
-    "completed", "infeasible", "stuck", "timeout", "unsolved", "invalid_plan", "failed", "error"};
+constexpr const char* kStatusNames[kTrialStatusCount] = {"completed", "infeasible", "stuck",
+                                                         "timeout",   "unsolved",   "invalid_plan",
+                                                         "failed",    "error",      "timeout_wall"};
 
 std::string num(double x) {
   char buf[32];

@@ -33,9 +33,12 @@ enum class TrialStatus {
   kUnsolved,
   kInvalidPlan,
   kFailed,
-  kError
+  kError,
+  // A baseline cut by the wall-clock safety net with CPU budget left (baselines/motion_query.h):
+  // the machine was loaded; not a result of the method.
+  kTimeoutWall
 };
-inline constexpr int kTrialStatusCount = 8;
+inline constexpr int kTrialStatusCount = 9;
 const char* to_string(TrialStatus s);
 // Throws rearm::Error for any other text.
 TrialStatus trial_status_from_string(std::string_view text);
@@ -65,6 +68,9 @@ struct TrialOutcome {
   // mission set-up and control steps up to its first non-zero command, a baseline's planning
   // until its first plan was complete and valid.
   double first_action_s = std::numeric_limits<double>::quiet_NaN();
+  // A baseline's planning in wall time (compute.planning_s is the planning thread's CPU time,
+  // what its budget counts); NaN for rearm.
+  double planning_wall_s = std::numeric_limits<double>::quiet_NaN();
   double wall_time_s = 0;  // the whole trial (planning, validation, simulation)
   double cpu_time_s = 0;   // the trial thread's CPU time (the runner measures it)
   double sim_time_s = 0;   // simulated seconds in Box2D

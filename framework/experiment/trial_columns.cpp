@@ -12,19 +12,11 @@
 namespace rearm::experiment {
 namespace {
 
-const char* const kTimingColumns[] = {"planning_time_s",
-                                      "mission_time_s",
-                                      "topology_time_s",
-                                      "rebuild_time_s",
-                                      "control_time_s",
-                                      "compute_time_s",
-                                      "first_action_time_s",
-                                      "wall_time_s",
-                                      "cpu_time_s",
-                                      "revision",
-                                      "host",
-                                      "cpu_model",
-                                      "finished_utc"};
+const char* const kTimingColumns[] = {
+    "planning_time_s", "planning_wall_s", "mission_time_s", "topology_time_s",
+    "rebuild_time_s",  "control_time_s",  "compute_time_s", "first_action_time_s",
+    "wall_time_s",     "cpu_time_s",      "revision",       "host",
+    "cpu_model",       "finished_utc"};
 
 // Shortest text that reads back to x (deterministic columns); "" for non-finite.
 std::string exact(double x) {
@@ -81,6 +73,7 @@ void outcome_fields(const TrialRecord& r, std::vector<std::string>& f) {
   f.push_back(o.goals_reached ? "1" : "0");
   f.push_back(o.reason);
   f.push_back(planner ? timing(o.compute.planning_s) : "");
+  f.push_back(planner && std::isfinite(o.planning_wall_s) ? timing(o.planning_wall_s) : "");
   for (double x :
        {o.compute.mission_s, o.compute.topology_s, o.compute.rebuild_s, o.compute.control_s}) {
     f.push_back(planner ? "" : timing(x));
@@ -144,6 +137,7 @@ const std::vector<std::string>& trial_columns() {
                                                    "goals_reached",
                                                    "reason",
                                                    "planning_time_s",
+                                                   "planning_wall_s",
                                                    "mission_time_s",
                                                    "topology_time_s",
                                                    "rebuild_time_s",
