@@ -105,6 +105,26 @@ def sweep_name(dir_path, rows):
     return ", ".join(names) if names else os.path.basename(os.path.abspath(dir_path))
 
 
+# How the rows of rearm (the methods that follow the task's order, the rows' goal_order
+# column) are named in every table and figure: the chain's rows are rearm bound to that order
+# while the baselines choose theirs; rows of logs before the column (goal_order empty) keep the
+# method's name.
+CHAIN_LABEL = " (bound to the chain's order; baselines free)"
+ANY_LABEL = " (any order)"
+
+
+def method_label(r):
+    method = r.get("method", "") or "?"
+    if not method.startswith("rearm"):
+        return method
+    order = r.get("goal_order", "")
+    if order == "chain":
+        return method + CHAIN_LABEL
+    if order == "any":
+        return method + ANY_LABEL
+    return method
+
+
 def nominal_footprint(achieved, goal_class, n):
     """The sweep file's footprint of a row (Trial.footprint), rounded to FOOTPRINT_DIGITS."""
     if achieved is None:
@@ -118,7 +138,7 @@ class Trial:
     """The fields of one row that the report uses, parsed."""
 
     def __init__(self, r):
-        self.method = r.get("method", "") or "?"
+        self.method = method_label(r)
         self.cls = r.get("class", "") or "?"
         n = number(r.get("objects"))
         self.n = int(n) if n is not None else None

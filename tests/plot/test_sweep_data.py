@@ -182,6 +182,22 @@ class WorkspaceRuleFootprintTest(unittest.TestCase):
         self.assertEqual(sweep_data.Trial(row).footprint, 0.05)  # inferred: F (N + 1) / N
 
 
+class GoalOrderLabelTest(unittest.TestCase):
+    """rearm's rows are named by the order they ran in (goal_order); the baselines' and the rows
+    of logs before the column keep the method's name."""
+
+    def test_labels(self):
+        base = {"method": "rearm", "class": "random", "objects": "4"}
+        label = lambda **kw: sweep_data.Trial(dict(base, **kw)).method
+        self.assertEqual(label(goal_order="chain"),
+                         "rearm (bound to the chain's order; baselines free)")
+        self.assertEqual(label(goal_order="any"), "rearm (any order)")
+        self.assertEqual(label(goal_order=""), "rearm")
+        self.assertEqual(label(), "rearm")
+        self.assertEqual(label(method="rearm-paper", goal_order="any"), "rearm-paper (any order)")
+        self.assertEqual(label(method="birrt@10000", goal_order="any"), "birrt@10000")
+
+
 class EqualTermsTimeTest(unittest.TestCase):
     """A baseline's time on equal terms is its wall time (planning and execution in Box2D), its
     planning kept apart; rearm's is its online compute, with no offline planning."""
