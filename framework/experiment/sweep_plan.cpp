@@ -133,10 +133,8 @@ SweepPlan plan_sweep(const scenario::SweepFile& f, const MethodRegistry& methods
                     // "NAME@K": its own budget; the seed is NAME's, so one planner at two budgets
                     // runs the same search, cut at two points.
                     const scenario::MethodEntry e = scenario::method_entry(m);
-                    if (has_any && order != scenario::GoalOrder::kAny &&
-                        !methods.get(e.method).follows_task_order()) {
-                      continue;
-                    }
+                    const bool follows = methods.get(e.method).follows_task_order();
+                    if (has_any && order != scenario::GoalOrder::kAny && !follows) continue;
                     TrialJob t;
                     t.index = plan.trials.size();
                     t.instance = job.index;
@@ -147,9 +145,7 @@ SweepPlan plan_sweep(const scenario::SweepFile& f, const MethodRegistry& methods
                                                planner_seed(job.spec.seed, e.method),
                                                f.time_limit,
                                                e.query_limit.value_or(f.query_limit),
-                                               methods.get(e.method).follows_task_order()
-                                                   ? scenario::to_string(order)
-                                                   : "any"};
+                                               follows ? scenario::to_string(order) : "any"};
                     plan.trials.push_back(std::move(t));
                   }
                   plan.instances.push_back(std::move(job));

@@ -176,6 +176,22 @@ std::vector<std::string> expand_ablation_group(const std::vector<std::string>& n
   return out;
 }
 
+// A list of names read by `from_string` (a generator enum's inverse of to_string), its error
+// reported at the entry's key.
+template <class T, class FromString>
+std::vector<T> names_of(Reader& r, const YAML::Node& node, const std::string& key,
+                        FromString from_string) {
+  return list_of<T>(r, node, key, [&](const YAML::Node& n, const std::string& p) {
+    try {
+      return from_string(r.text(n, p));
+    } catch (const ScenarioError&) {
+      throw;
+    } catch (const Error& e) {
+      r.fail(p, e.what());
+    }
+  });
+}
+
 void read_lists(Reader& r, const Fields& f, SweepFile& s) {
   const auto named = list_of<std::string>(r, f.require("methods"), "methods",
                                           [&](const YAML::Node& n, const std::string& p) {
@@ -189,27 +205,9 @@ void read_lists(Reader& r, const Fields& f, SweepFile& s) {
                                             return m;
                                           });
   s.methods = expand_ablation_group(named);
-  s.classes = list_of<GoalClass>(r, f.require("classes"), "classes",
-                                 [&](const YAML::Node& n, const std::string& p) {
-                                   try {
-                                     return goal_class_from_string(r.text(n, p));
-                                   } catch (const ScenarioError&) {
-                                     throw;
-                                   } catch (const Error& e) {
-                                     r.fail(p, e.what());
-                                   }
-                                 });
+  s.classes = names_of<GoalClass>(r, f.require("classes"), "classes", goal_class_from_string);
   if (const auto v = f.find("goal_orders")) {
-    s.goal_orders =
-        list_of<GoalOrder>(r, *v, "goal_orders", [&](const YAML::Node& n, const std::string& p) {
-          try {
-            return goal_order_from_string(r.text(n, p));
-          } catch (const ScenarioError&) {
-            throw;
-          } catch (const Error& e) {
-            r.fail(p, e.what());
-          }
-        });
+    s.goal_orders = names_of<GoalOrder>(r, *v, "goal_orders", goal_order_from_string);
   }
   s.objects = list_of<int>(r, f.require("objects"), "objects",
                            [&](const YAML::Node& n, const std::string& p) {

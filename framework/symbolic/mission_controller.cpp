@@ -139,6 +139,16 @@ MissionController::MissionController(const ltl::Formula& formula, MissionOptions
 
 namespace {
 
+// Over the automaton, or the parts' in the product form.
+template <class Count>
+std::size_t sum_over_automata(const ProductMission* product, const ltl::ActionNba& nba,
+                              Count count) {
+  if (!product) return count(nba);
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < product->num_groups(); ++i) n += count(product->part_automaton(i));
+  return n;
+}
+
 void demand_whole(bool product, const char* what) {
   if (product) {
     throw Error(std::string(what) +
@@ -164,21 +174,14 @@ const MissionGraph& MissionController::graph() const {
 }
 
 std::size_t MissionController::automaton_states() const {
-  if (!product_) return nba_.num_states();
-  std::size_t n = 0;
-  for (std::size_t i = 0; i < product_->num_groups(); ++i) {
-    n += product_->part_automaton(i).num_states();
-  }
-  return n;
+  return sum_over_automata(product_.get(), nba_, [](const ltl::ActionNba& a) {
+    return static_cast<std::size_t>(a.num_states());
+  });
 }
 
 std::size_t MissionController::automaton_edges() const {
-  if (!product_) return nba_.num_edges();
-  std::size_t n = 0;
-  for (std::size_t i = 0; i < product_->num_groups(); ++i) {
-    n += product_->part_automaton(i).num_edges();
-  }
-  return n;
+  return sum_over_automata(product_.get(), nba_,
+                           [](const ltl::ActionNba& a) { return a.num_edges(); });
 }
 
 std::string MissionController::graph_text() const {
@@ -229,30 +232,9 @@ void MissionController::set_infeasible(std::string reason) {
   pending_.reset();
 }
 
-// Candidate edges from the current node: accepting edges in a cycle when in V_F, else edges
-// one hop closer to V_F (Eq. 8).
+// Candidate edges from the current node (Eq. 8, eq8_choices).
 std::vector<MissionController::Choice> MissionController::candidates() const {
-  std::vector<Choice> all;
-  const auto& out = graph_->out(node_);
-  const std::uint32_t d = graph_->d_f(node_);
-  if (d == MissionGraph::kInfinity) return all;
-  const bool in_vf = graph_->in_vf(node_);
-  for (std::size_t i = 0; i < out.size(); ++i) {
-    const MissionGraph::Edge& e = out[i];
-    const bool candidate = in_vf ? (e.accepting && e.in_cycle) : graph_->d_f(e.dst) + 1 == d;
-    if (!candidate) continue;
-    if (e.letters.test(held_)) {
-      all.push_back(Choice{i, held_});  // nothing to do
-      continue;
-    }
-    // The lowest feasible action letter (letter 0 cannot be performed).
-    std::size_t letter = e.letters.next(1);
-    while (letter < e.letters.universe() && excluded_.test(letter)) {
-      letter = e.letters.next(letter + 1);
-    }
-    if (letter < e.letters.universe()) all.push_back(Choice{i, letter});
-  }
-  return all;
+  return eq8_choices(*graph_, node_, held_, excluded_);
 }
 
 // Among the candidates, an edge the held letter already drives (no action needed) first, then

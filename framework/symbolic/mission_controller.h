@@ -110,10 +110,7 @@ class MissionController {
   std::vector<Action> infeasible_actions() const;
 
  private:
-  struct Choice {
-    std::size_t edge;
-    std::size_t letter;
-  };
+  using Choice = EdgeChoice;
   std::optional<Choice> choose(bool only_same_edge, const std::optional<Choice>& failed) const;
   void rebuild();
   // Successors of `states` under `letter`, closed under holding it longer (stuttering).

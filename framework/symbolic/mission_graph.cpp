@@ -75,6 +75,31 @@ std::vector<std::uint32_t> read_holding(const ltl::ActionNba& nba,
   return out;
 }
 
+std::vector<EdgeChoice> eq8_choices(const MissionGraph& g, std::uint32_t v,
+                                    std::optional<std::size_t> held, const LetterSet& excluded) {
+  std::vector<EdgeChoice> all;
+  const std::uint32_t d = g.d_f(v);
+  if (d == MissionGraph::kInfinity) return all;
+  const bool in_vf = g.in_vf(v);
+  const auto& out = g.out(v);
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    const MissionGraph::Edge& e = out[i];
+    const bool candidate = in_vf ? (e.accepting && e.in_cycle) : g.d_f(e.dst) + 1 == d;
+    if (!candidate) continue;
+    if (held && e.letters.test(*held)) {
+      all.push_back(EdgeChoice{i, *held});  // nothing to do
+      continue;
+    }
+    // The lowest feasible action letter (letter 0 cannot be performed).
+    std::size_t letter = e.letters.next(1);
+    while (letter < e.letters.universe() && excluded.test(letter)) {
+      letter = e.letters.next(letter + 1);
+    }
+    if (letter < e.letters.universe()) all.push_back(EdgeChoice{i, letter});
+  }
+  return all;
+}
+
 MissionGraph::MissionGraph(const ltl::ActionNba& nba, Start start, const LetterSet& excluded,
                            GraphMode mode)
     : nba_(&nba), mode_(mode) {

@@ -21,6 +21,7 @@
 
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -42,6 +43,22 @@ GraphMode parse_graph_mode(const std::string& text);
 std::vector<std::uint32_t> read_holding(const ltl::ActionNba& nba,
                                         const std::vector<std::uint32_t>& states,
                                         std::size_t letter, std::vector<char>& scratch);
+
+class MissionGraph;
+
+// One choice of Eq. (8) at a node of G: an out-edge (index into MissionGraph::out) and the
+// letter that drives it.
+struct EdgeChoice {
+  std::size_t edge;
+  std::size_t letter;
+};
+// The choices Eq. (8) admits at node v, in edge order: each edge one hop closer to V_F (in V_F,
+// each accepting edge of its cycle), with the held letter when it drives the edge (nothing to
+// do; `held` nullopt: no letter may count as held), else its lowest letter not in `excluded`;
+// an edge only excluded letters drive is left out. Empty when V_F is unreachable from v.
+std::vector<EdgeChoice> eq8_choices(const MissionGraph& g, std::uint32_t v,
+                                    std::optional<std::size_t> held,
+                                    const ltl::LetterSet& excluded);
 
 class MissionGraph {
  public:

@@ -149,28 +149,15 @@ bool ProductMission::idle(const Group& g) const {
   return false;
 }
 
-// The choices of the whole-automaton controller's choose(), per group: edges one hop closer
-// to the group's V_F (the sum one smaller), or accepting edges of its cycle when in V_F; per
-// edge the held letter (nothing to do) or else the lowest feasible action letter.
+// The choices of the whole-automaton controller's choose(), per group (eq8_choices): a group
+// that no longer holds its own letter has none that counts as held.
 std::vector<ProductMission::Choice> ProductMission::candidates(const Group& g,
                                                                std::size_t index) const {
   std::vector<Choice> out;
-  const auto& edges = g.graph->out(g.node);
-  const std::uint32_t d = g.graph->d_f(g.node);
-  const bool in_vf = g.graph->in_vf(g.node);
-  for (std::size_t i = 0; i < edges.size(); ++i) {
-    const MissionGraph::Edge& e = edges[i];
-    const bool candidate = in_vf ? (e.accepting && e.in_cycle) : g.graph->d_f(e.dst) + 1 == d;
-    if (!candidate) continue;
-    if (g.holding && e.letters.test(g.last)) {
-      out.push_back(Choice{index, i, g.last});
-      continue;
-    }
-    std::size_t letter = e.letters.next(1);
-    while (letter < e.letters.universe() && g.excluded.test(letter)) {
-      letter = e.letters.next(letter + 1);
-    }
-    if (letter < e.letters.universe()) out.push_back(Choice{index, i, letter});
+  const std::optional<std::size_t> held =
+      g.holding ? std::optional<std::size_t>(g.last) : std::nullopt;
+  for (const EdgeChoice& c : eq8_choices(*g.graph, g.node, held, g.excluded)) {
+    out.push_back(Choice{index, c.edge, c.letter});
   }
   return out;
 }
@@ -179,7 +166,7 @@ std::optional<ProductMission::Choice> ProductMission::choose(
     bool only_same_edge, const std::optional<Choice>& failed) const {
   if (d_f() == MissionGraph::kInfinity) return std::nullopt;
   std::optional<Choice> best;
-  for (std::size_t gi = 0; gi < groups_.size(); ++gi) {
+  for (std::size_t gi = 0; gi < groups_.size(); ++gi) {  // open_choices() without its copy
     const Group& g = *groups_[gi];
     if (idle(g)) continue;
     for (const Choice& c : candidates(g, gi)) {
@@ -304,29 +291,32 @@ bool ProductMission::rebuild_stale() {
   return any && !infeasible_;
 }
 
+std::vector<ProductMission::Choice> ProductMission::open_choices() const {
+  std::vector<Choice> out;
+  for (std::size_t gi = 0; gi < groups_.size(); ++gi) {
+    if (idle(*groups_[gi])) continue;
+    for (const Choice& c : candidates(*groups_[gi], gi)) out.push_back(c);
+  }
+  return out;
+}
+
 std::vector<Action> ProductMission::alternatives() const {
   std::vector<Action> out;
   if (!pending_ || infeasible_) return out;
   out.push_back(action_of(*pending_));
-  for (std::size_t gi = 0; gi < groups_.size(); ++gi) {
-    if (idle(*groups_[gi])) continue;
-    for (const Choice& c : candidates(*groups_[gi], gi)) {
-      const Action a = action_of(c);
-      if (std::find(out.begin(), out.end(), a) == out.end()) out.push_back(a);
-    }
+  for (const Choice& c : open_choices()) {
+    const Action a = action_of(c);
+    if (std::find(out.begin(), out.end(), a) == out.end()) out.push_back(a);
   }
   return out;
 }
 
 void ProductMission::prefer(const Action& action) {
   if (!pending_) throw Error("prefer: no action is pending (call next_action first)");
-  for (std::size_t gi = 0; gi < groups_.size(); ++gi) {
-    if (idle(*groups_[gi])) continue;
-    for (const Choice& c : candidates(*groups_[gi], gi)) {
-      if (action_of(c) == action) {
-        pending_ = c;
-        return;
-      }
+  for (const Choice& c : open_choices()) {
+    if (action_of(c) == action) {
+      pending_ = c;
+      return;
     }
   }
   throw Error("prefer: " + action.to_string() + " is not an alternative of the pending action");

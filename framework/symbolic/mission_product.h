@@ -115,6 +115,8 @@ class ProductMission {
   bool idle(const Group& g) const;
   std::optional<Choice> choose(bool only_same_edge, const std::optional<Choice>& failed) const;
   std::vector<Choice> candidates(const Group& g, std::size_t index) const;
+  // The candidates of every group not done yet, in group order.
+  std::vector<Choice> open_choices() const;
   void rebuild(Group& g);
   bool rebuild_stale();
   void set_infeasible(std::string reason);
