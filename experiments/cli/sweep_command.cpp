@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "baselines/baseline_method.h"
+#include "baselines/constructive.h"
 #include "command.h"
 #include "core/error.h"
 #include "core/file_io.h"
@@ -137,7 +138,8 @@ std::vector<experiment::CellVerdict> check_shard_cells(const experiment::SweepPl
     std::fprintf(o.progress, "sweep %s: checking the obstacle density of %zu instances\n",
                  full.name.c_str(), check.size());
   }
-  std::vector<experiment::CellVerdict> verdicts = experiment::check_cells(check, o.threads, &keep);
+  std::vector<experiment::CellVerdict> verdicts =
+      experiment::check_cells(check, o.threads, &keep, o.generators);
   o.generated = &keep;
   o.cells_csv = experiment::verdicts_csv(verdicts);
   return verdicts;
@@ -185,6 +187,7 @@ int run_sweep_file(SweepArgs a) {
   const std::string& path = a.path;
   const scenario::SweepFile file = scenario::load_sweep_file(path);
   o.spec_text = read_file(path);
+  o.generators.constructive = baselines::generate_constructive;
   const experiment::MethodRegistry methods = registry();
   const experiment::SweepPlan full = experiment::plan_sweep(file, methods);
   const experiment::SweepPlan part = experiment::shard_of(full, o.shard);

@@ -19,7 +19,7 @@ from collections import defaultdict
 Z95 = 1.959963984540054
 
 # The goal classes in the order of the paper's study; a class not listed still appears, after.
-KNOWN_CLASSES = ["random", "cyclic", "sealed"]
+KNOWN_CLASSES = ["random", "cyclic", "sealed", "constructive"]
 
 # Columns the C++ writer places between `fix_mode_entries` and the recovery counters that are
 # not recoveries: `replans` counts the replan baseline's replanning (baselines/).
@@ -189,6 +189,11 @@ class Trial:
         # goal-on-start dependency graph, objects whose goal another object occupies, objects
         # walled in by other objects at the start.
         self.difficulty = {k: number(r.get(k)) for k in DIFFICULTY_COLUMNS}
+        # The instance's geometry, shared by its chain and any-order rows (one instance seed,
+        # one room), and whether a witness plan that solves it came with it (class constructive).
+        self.geometry = (self.cls, self.n, self.density, self.variant,
+                         r.get("instance_seed", ""), r.get("scatter_moves", "") or "")
+        self.witness = (r.get("witness", "") or "").strip() == "1"
 
 
 # ----------------------------------------------------------------------------- statistics
@@ -340,6 +345,12 @@ class Sweep:
         # (class, method, N, density) -> Cell, the variant pooled; vcells keep it apart (the
         # table's rows when variants differ).
         self.cells = group_cells(t, lambda x: (x.cls, x.method, x.n, x.density))
+        # Per instance geometry: solved by some method of the sweep (the oracle), and known
+        # solvable (that, or a witness plan came with the instance).
+        self.solved_by_any, self.known_solvable = defaultdict(bool), defaultdict(bool)
+        for x in t:
+            self.solved_by_any[x.geometry] |= x.success
+            self.known_solvable[x.geometry] |= x.success or x.witness
         self.vcells = group_cells(t, lambda x: (x.cls, x.method, x.n, x.density, x.variant))
 
     def cell(self, cls, method, n, density):
@@ -350,6 +361,13 @@ class Sweep:
         return Cell([x for x in self.trials
                      if (cls is None or x.cls == cls) and (method is None or x.method == method)
                      and (n is None or x.n == n) and (density is None or x.density == density)])
+
+
+def solvable_counts(s, trials):
+    """(solved by some method, known solvable, instances) over the geometries of `trials`."""
+    geometries = {x.geometry for x in trials}
+    return (sum(s.solved_by_any[g] for g in geometries),
+            sum(s.known_solvable[g] for g in geometries), len(geometries))
 
 
 def group_cells(trials, key):

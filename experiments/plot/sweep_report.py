@@ -6,7 +6,7 @@ standard library is used.
 import math
 from collections import Counter
 
-from sweep_data import density_bins, density_cells, ordered, pooled
+from sweep_data import density_bins, density_cells, ordered, pooled, solvable_counts
 
 # The statuses in the order of a trial's life; a status not listed still gets a column, after.
 STATUS_ORDER = ["completed", "infeasible", "stuck", "timeout", "unsolved", "invalid_plan",
@@ -119,8 +119,9 @@ def cell_table(s):
     head = ["class", "method", "N", "density"]
     if vary:
         head += ["unknown", "shapes", "workspace"]
-    head += ["trials", "successes", "success (95% CI)", "time s: median [IQR]",
-             "time s, all trials: median", "achieved density", "actions", "path m"]
+    head += ["trials", "successes", "success (95% CI)", "instances solved by any method",
+             "known solvable", "time s: median [IQR]", "time s, all trials: median",
+             "achieved density", "actions", "path m"]
     lines = ["## Success and cost per cell", ""] + md_head(head)
     source = s.vcells if vary else s.cells
     for cls in s.classes:
@@ -132,7 +133,9 @@ def cell_table(s):
                 row = [cls, method, "-" if k[2] is None else str(k[2]), fmt_density(k[3])]
                 if vary:
                     row += [md_cell(v) or "-" for v in k[4]]
+                oracle, known, instances = solvable_counts(s, c.trials)
                 row += [str(c.n), str(c.k), "%.2f [%.2f, %.2f]" % (c.rate, c.ci[0], c.ci[1]),
+                        "%d/%d" % (oracle, instances), "%d/%d" % (known, instances),
                         iqr_text(c.time), median_text(c.time_all), median_text(c.achieved),
                         median_text(c.actions), median_text(c.path)]
                 lines.append(md_row(row))

@@ -29,13 +29,13 @@ std::string instance_problem(const InstanceJob& job, const GeneratedJob& g) {
 }  // namespace
 
 std::vector<CellVerdict> check_cells(const std::vector<InstanceJob>& instances, int threads,
-                                     GeneratedJobs* keep) {
+                                     GeneratedJobs* keep, const InstanceGenerators& generators) {
   std::vector<std::string> problems(instances.size());
   std::vector<GeneratedJob> generated(instances.size());
   tbb::task_arena arena(threads);
   arena.execute([&] {
     tbb::parallel_for(std::size_t{0}, instances.size(), [&](std::size_t i) {
-      generated[i] = generate_job(instances[i]);
+      generated[i] = generate_job(instances[i], generators);
       problems[i] = instance_problem(instances[i], generated[i]);
     });
   });

@@ -27,7 +27,8 @@ struct CellVerdict {
 // among them), in cell order; generated on `threads` threads (the verdicts do not depend on it).
 // `keep`: where the generated instances go, for the runner (SweepOptions::generated).
 std::vector<CellVerdict> check_cells(const std::vector<InstanceJob>& instances, int threads,
-                                     GeneratedJobs* keep = nullptr);
+                                     GeneratedJobs* keep = nullptr,
+                                     const InstanceGenerators& generators = {});
 
 // The instances of `full` whose cells the shard plan `part` touches: what a shard must check so
 // that every shard refuses the same cells.

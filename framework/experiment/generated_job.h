@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <map>
 #include <optional>
 #include <string>
@@ -15,13 +16,21 @@
 
 namespace rearm::experiment {
 
+// Generators of the classes framework/ cannot build itself: kConstructive scatters its objects
+// with the baselines' move planner (baselines::generate_constructive), which the command line
+// wires in (nothing in framework/ includes baselines/).
+struct InstanceGenerators {
+  std::function<scenario::GeneratedInstance(const scenario::InstanceSpec&)> constructive;
+};
+
 struct GeneratedJob {
   std::optional<scenario::GeneratedInstance> instance;
   std::string error;  // the generator's message when it threw; empty otherwise
 };
 
-// Generates the job's instance; a generator exception becomes `error`.
-GeneratedJob generate_job(const InstanceJob& job);
+// Generates the job's instance; a generator exception becomes `error`, as does class
+// kConstructive without its generator.
+GeneratedJob generate_job(const InstanceJob& job, const InstanceGenerators& generators = {});
 
 // Generated instances by canonical instance index (InstanceJob::index).
 using GeneratedJobs = std::map<std::size_t, GeneratedJob>;

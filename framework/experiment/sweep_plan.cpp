@@ -87,6 +87,9 @@ std::string cell_name(const InstanceJob& job) {
                 s.round_unknown ? "round" : "polygon");
   std::string name = buf;
   if (s.goal_order == scenario::GoalOrder::kAny) name += "_any";  // chain: the name as before
+  if (s.goal_class == scenario::GoalClass::kConstructive && s.scatter_moves != 0) {
+    name += "_k" + std::to_string(s.scatter_moves);  // 0 (K = 2N): none
+  }
   for (char& c : name) {
     if (c == '+') c = 'p';
   }
@@ -114,42 +117,44 @@ SweepPlan plan_sweep(const scenario::SweepFile& f, const MethodRegistry& methods
   const bool has_any = std::find(f.goal_orders.begin(), f.goal_orders.end(),
                                  scenario::GoalOrder::kAny) != f.goal_orders.end();
   for (const scenario::GoalClass c : f.classes)
-    for (const int n : f.objects)
-      for (const scenario::WorkspaceRule& w : workspaces)
-        for (const double density : f.densities)
-          for (const double unknown : f.unknown_fractions)
-            for (const bool round : f.round_unknown)
-              for (const scenario::GoalOrder order : f.goal_orders)
-                for (int rep = 0; rep < f.seeds; ++rep) {
-                  InstanceJob job;
-                  job.index = plan.instances.size();
-                  job.cell = job.index / static_cast<std::size_t>(f.seeds);
-                  job.spec = cell_spec(f, w, c, n, density, unknown, round);
-                  job.spec.goal_order = order;
-                  job.spec.seed = instance_seed(f.base_seed, n, rep);  // the same for each order
-                  job.rep = rep;
-                  job.workspace_rule = w.describe();
-                  for (const std::string& m : f.methods) {
-                    // "NAME@K": its own budget; the seed is NAME's, so one planner at two budgets
-                    // runs the same search, cut at two points.
-                    const scenario::MethodEntry e = scenario::method_entry(m);
-                    const bool follows = methods.get(e.method).follows_task_order();
-                    if (has_any && order != scenario::GoalOrder::kAny && !follows) continue;
-                    TrialJob t;
-                    t.index = plan.trials.size();
-                    t.instance = job.index;
-                    t.settings = TrialSettings{m,
-                                               job.spec,
-                                               rep,
-                                               job.workspace_rule,
-                                               planner_seed(job.spec.seed, e.method),
-                                               f.time_limit,
-                                               e.query_limit.value_or(f.query_limit),
-                                               follows ? scenario::to_string(order) : "any"};
-                    plan.trials.push_back(std::move(t));
+    for (const int k : f.scatter_moves_of(c))
+      for (const int n : f.objects)
+        for (const scenario::WorkspaceRule& w : workspaces)
+          for (const double density : f.densities)
+            for (const double unknown : f.unknown_fractions)
+              for (const bool round : f.round_unknown)
+                for (const scenario::GoalOrder order : f.goal_orders)
+                  for (int rep = 0; rep < f.seeds; ++rep) {
+                    InstanceJob job;
+                    job.index = plan.instances.size();
+                    job.cell = job.index / static_cast<std::size_t>(f.seeds);
+                    job.spec = cell_spec(f, w, c, n, density, unknown, round);
+                    job.spec.scatter_moves = k;
+                    job.spec.goal_order = order;
+                    job.spec.seed = instance_seed(f.base_seed, n, rep);  // the same for each order
+                    job.rep = rep;
+                    job.workspace_rule = w.describe();
+                    for (const std::string& m : f.methods) {
+                      // "NAME@K": its own budget; the seed is NAME's, so one planner at two budgets
+                      // runs the same search, cut at two points.
+                      const scenario::MethodEntry e = scenario::method_entry(m);
+                      const bool follows = methods.get(e.method).follows_task_order();
+                      if (has_any && order != scenario::GoalOrder::kAny && !follows) continue;
+                      TrialJob t;
+                      t.index = plan.trials.size();
+                      t.instance = job.index;
+                      t.settings = TrialSettings{m,
+                                                 job.spec,
+                                                 rep,
+                                                 job.workspace_rule,
+                                                 planner_seed(job.spec.seed, e.method),
+                                                 f.time_limit,
+                                                 e.query_limit.value_or(f.query_limit),
+                                                 follows ? scenario::to_string(order) : "any"};
+                      plan.trials.push_back(std::move(t));
+                    }
+                    plan.instances.push_back(std::move(job));
                   }
-                  plan.instances.push_back(std::move(job));
-                }
   plan.total_trials = plan.trials.size();
   return plan;
 }

@@ -58,29 +58,34 @@ InstanceInfo info_of(const scenario::GeneratedInstance& g) {
   info.familiar = static_cast<int>(g.scenario.familiar.size());
   info.unknown = static_cast<int>(g.scenario.unknown.size());
   info.difficulty = scenario::instance_difficulty(g.scenario, g.goals);
+  info.witness = !g.witness.empty();
   return info;
 }
 
 // The cell check's instance of the job (SweepOptions::generated) when it made one, else a new one.
-GeneratedJob kept_or_generated(const InstanceJob& job, const GeneratedJobs* pre) {
-  if (pre != nullptr) {
-    const auto it = pre->find(job.index);
-    if (it != pre->end()) return it->second;
+GeneratedJob kept_or_generated(const InstanceJob& job, const SweepOptions& o) {
+  if (o.generated != nullptr) {
+    const auto it = o.generated->find(job.index);
+    if (it != o.generated->end()) return it->second;
   }
-  return generate_job(job);
+  return generate_job(job, o.generators);
 }
 
-// The job's instance, kept as instances/<name>.yaml, or why it could not be generated.
-Generated generate(const InstanceJob& job, const fs::path& instances, const GeneratedJobs* pre) {
+// The job's instance, kept as instances/<name>.yaml (and its witness plan, class constructive,
+// as instances/<name>.witness.json), or why it could not be generated.
+Generated generate(const InstanceJob& job, const fs::path& instances, const SweepOptions& o) {
   Generated out;
   try {
-    GeneratedJob j = kept_or_generated(job, pre);
+    GeneratedJob j = kept_or_generated(job, o);
     if (!j.instance) throw Error(j.error);
     scenario::GeneratedInstance& g = *j.instance;
     g.scenario.name = instance_name(job);
     out.info = info_of(g);
     const fs::path file = instances / (g.scenario.name + ".yaml");
     if (!fs::exists(file)) write_file_atomically(file.string(), scenario::to_yaml(g.scenario));
+    const fs::path witness = instances / (g.scenario.name + kWitnessSuffix);
+    if (!g.witness.empty() && !fs::exists(witness))
+      write_file_atomically(witness.string(), g.witness);
     out.scenario = std::move(g.scenario);
   } catch (const std::exception& e) {
     out.error = std::string("instance generation failed: ") + e.what();
@@ -194,7 +199,7 @@ SweepSummary run_sweep(const SweepPlan& plan, const MethodRegistry& methods,
   tbb::task_arena arena(o.threads);
   arena.execute([&] {
     tbb::parallel_for(std::size_t{0}, plan.instances.size(), [&](std::size_t i) {
-      if (needed[i]) generated[i] = generate(plan.instances[i], dir / kInstancesDir, o.generated);
+      if (needed[i]) generated[i] = generate(plan.instances[i], dir / kInstancesDir, o);
     });
     tbb::parallel_for(
         tbb::blocked_range<std::size_t>(0, todo.size(), 1),

@@ -63,6 +63,9 @@ std::string resume_key(const TrialSettings& s) {
   if (i.goal_order != scenario::GoalOrder::kChain) {
     k += ";goal_order=" + std::string(scenario::to_string(i.goal_order));
   }
+  if (i.goal_class == scenario::GoalClass::kConstructive) {
+    k += ";scatter_moves=" + std::to_string(i.scatter_moves);
+  }
   return k;
 }
 

@@ -114,6 +114,7 @@ struct InstanceInfo {
   double footprint_density = 0;
   int familiar = 0, unknown = 0;            // obstacle counts
   scenario::InstanceDifficulty difficulty;  // goal cycles, occupied goals, walled-in objects
+  bool witness = false;  // a plan that solves it comes with it (class constructive)
 };
 
 struct Provenance {

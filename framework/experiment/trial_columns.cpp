@@ -44,6 +44,8 @@ void settings_fields(const TrialRecord& r, std::vector<std::string>& f) {
   f.push_back(s.method);
   f.push_back(scenario::to_string(i.goal_class));
   f.push_back(s.goal_order);
+  f.push_back(i.goal_class == scenario::GoalClass::kConstructive ? integer(i.scatter_move_count())
+                                                                 : "");
   f.push_back(integer(i.objects));
   f.push_back(exact(i.obstacle_density));
   f.push_back(exact(r.instance.achieved_density));
@@ -58,6 +60,7 @@ void settings_fields(const TrialRecord& r, std::vector<std::string>& f) {
   f.push_back(integer(r.instance.difficulty.goal_cycle_objects));
   f.push_back(integer(r.instance.difficulty.goals_occupied));
   f.push_back(integer(r.instance.difficulty.walled_in));
+  f.push_back(r.instance.witness ? "1" : "0");
   f.push_back(integer(s.rep));
   f.push_back(std::to_string(i.seed));
   f.push_back(std::to_string(s.planner_seed));
@@ -113,6 +116,7 @@ const std::vector<std::string>& trial_columns() {
                                                    "method",
                                                    "class",
                                                    "goal_order",
+                                                   "scatter_moves",
                                                    "objects",
                                                    "target_density",
                                                    "achieved_density",
@@ -127,6 +131,7 @@ const std::vector<std::string>& trial_columns() {
                                                    "goal_cycle_objects",
                                                    "goals_occupied",
                                                    "walled_in",
+                                                   "witness",
                                                    "rep",
                                                    "instance_seed",
                                                    "planner_seed",
@@ -209,7 +214,8 @@ std::vector<std::string> trial_fields(const TrialRecord& r) {
 std::string trial_row(const TrialRecord& r) { return csv_line(trial_fields(r)); }
 
 bool may_be_missing(const std::string& name) {
-  return is_timing_column(name) || name == "goal_order";
+  return is_timing_column(name) || name == "goal_order" || name == "scatter_moves" ||
+         name == "witness";
 }
 
 bool is_timing_column(const std::string& name) {

@@ -157,6 +157,12 @@ void check_spec(const InstanceSpec& spec) {
     bad_field("max_attempts", "must be an integer in [1, " + std::to_string(kMaxAttemptsLimit) +
                                   "], got " + std::to_string(spec.max_attempts));
   }
+  if (spec.scatter_moves < 0 || spec.scatter_moves > kMaxScatterMovesPerObject * spec.objects) {
+    bad_field("scatter_moves",
+              "must be an integer in [0, " + std::to_string(kMaxScatterMovesPerObject) +
+                  " N = " + std::to_string(kMaxScatterMovesPerObject * spec.objects) +
+                  "] (0: 2N), got " + std::to_string(spec.scatter_moves));
+  }
   if (spec.region_side < 2 * spec.object_radius) {
     bad_field("region_side",
               "must be >= 2 object_radius = " + shortest_decimal(2 * spec.object_radius) +

@@ -844,17 +844,20 @@ const char* to_string(GoalClass c) {
       return "cyclic";
     case GoalClass::kSealed:
       return "sealed";
+    case GoalClass::kConstructive:
+      return "constructive";
   }
   REARM_DEMAND(false, "to_string: invalid GoalClass " + std::to_string(static_cast<int>(c)));
   return "";
 }
 
 GoalClass goal_class_from_string(std::string_view text) {
-  for (const GoalClass c : {GoalClass::kRandom, GoalClass::kCyclic, GoalClass::kSealed}) {
+  for (const GoalClass c :
+       {GoalClass::kRandom, GoalClass::kCyclic, GoalClass::kSealed, GoalClass::kConstructive}) {
     if (text == to_string(c)) return c;
   }
   throw Error("goal class: unknown '" + std::string(text) +
-              "' (expected 'random', 'cyclic' or 'sealed')");
+              "' (expected 'random', 'cyclic', 'sealed' or 'constructive')");
 }
 
 const char* to_string(GoalOrder o) { return o == GoalOrder::kAny ? "any" : "chain"; }
@@ -891,6 +894,16 @@ GeneratedInstance generate_with(const InstanceSpec& spec, Rules rules) {
 // The standard rules first; only a spec they cannot place is drawn again under the crowded
 // fallback (random_instance.h), so every instance the standard rules place stays bit for bit.
 GeneratedInstance generate_instance(const InstanceSpec& spec) {
+  if (spec.goal_class == GoalClass::kConstructive) {
+    throw Error(describe(spec) +
+                ": class constructive scatters its objects with the baselines' move planner "
+                "(baselines::constructive_instance, baselines/constructive.h), which sweeps do "
+                "not call yet");
+  }
+  return generate_room(spec);
+}
+
+GeneratedInstance generate_room(const InstanceSpec& spec) {
   check_spec(spec);
   std::string standard;
   try {

@@ -129,9 +129,11 @@
 
 namespace rearm::scenario {
 
-enum class GoalClass { kRandom, kCyclic, kSealed };
+// kConstructive: instances known to be solvable, built backwards from their solution by
+// baselines/constructive.h (its room and goals are the kRandom rules'; generate_room below).
+enum class GoalClass { kRandom, kCyclic, kSealed, kConstructive };
 
-const char* to_string(GoalClass c);  // "random", "cyclic", "sealed"
+const char* to_string(GoalClass c);  // "random", "cyclic", "sealed", "constructive"
 // The inverse of to_string; throws rearm::Error on any other text.
 GoalClass goal_class_from_string(std::string_view text);
 
@@ -162,6 +164,8 @@ inline constexpr double kMaxPassageMargin = 2.0;
 inline constexpr double kMaxObstacleSide = 3.0;
 inline constexpr double kMinMaxObstacleSide = 0.8;
 inline constexpr double kMaxMaxObstacleSide = 5.0;
+// The constructive class's scatter moves K (InstanceSpec::scatter_moves), per object at most.
+inline constexpr int kMaxScatterMovesPerObject = 8;
 
 struct InstanceSpec {
   int objects = 3;                // N, in [1, kMaxInstanceObjects]
@@ -184,6 +188,12 @@ struct InstanceSpec {
   double passage_margin = kPassageMargin;       // m, in [kMinPassageMargin, kMaxPassageMargin]
   double max_obstacle_side = kMaxObstacleSide;  // m, see kMaxObstacleSide
   int max_attempts = 2000;  // rejection-sampling attempts per placement, in [1, 1e6]
+  // Class kConstructive: the pick-and-place moves K that scatter the objects from their goals
+  // (baselines/constructive.h); 0: K = 2N. In [0, kMaxScatterMovesPerObject·N]; other classes
+  // ignore it.
+  int scatter_moves = 0;
+  // The K in force: scatter_moves, or 2N when it is 0.
+  int scatter_move_count() const { return scatter_moves > 0 ? scatter_moves : 2 * objects; }
 };
 
 // The sealed class's pocket (GeneratedInstance::pocket).
@@ -209,6 +219,9 @@ struct GeneratedInstance {
   std::vector<geometry::Point> goals;  // M1..MN's goal points (the centres of l1..lN)
   SolvabilityReport solvability;       // check_solvability(scenario); always solvable
   SealedPocket pocket;
+  // Class kConstructive: the witness plan that solves the instance (baselines' plan format as
+  // JSON, baselines/plan_json.h), written beside the instance by a sweep; "" for other classes.
+  std::string witness;
 };
 
 // A random instance of the spec. Scenario::name is "random_<class>_n<N>_s<seed>", source "",
@@ -223,7 +236,12 @@ struct GeneratedInstance {
 // 2 object_radius, a workspace too small for the clearances), and naming the spec when an
 // object start, a goal, the robot start, the parking spot or the pocket cannot be placed in
 // max_attempts attempts, or the exact checks fail kMaxRedraws + 1 times (never a hang).
+// Class kConstructive throws rearm::Error: its objects' starts are the constructive generator's
+// (baselines/constructive.h), which builds on generate_room.
 GeneratedInstance generate_instance(const InstanceSpec& spec);
+// generate_instance for every class, kConstructive drawn by the kRandom rules (its name and
+// description say constructive; the objects stand at the random class's starts, to be replaced).
+GeneratedInstance generate_room(const InstanceSpec& spec);
 // generate_instance(spec).scenario.
 Scenario random_instance(const InstanceSpec& spec);
 

@@ -213,6 +213,13 @@ void read_lists(Reader& r, const Fields& f, SweepFile& s) {
                            [&](const YAML::Node& n, const std::string& p) {
                              return int_in_range(r, n, p, 1, kMaxInstanceObjects);
                            });
+  if (const auto v = f.find("scatter_moves")) {
+    const int most =
+        kMaxScatterMovesPerObject * *std::min_element(s.objects.begin(), s.objects.end());
+    s.scatter_moves = list_of<int>(
+        r, *v, "scatter_moves",
+        [&](const YAML::Node& n, const std::string& p) { return int_in_range(r, n, p, 0, most); });
+  }
   s.densities = list_of<double>(r, f.require("densities"), "densities",
                                 [&](const YAML::Node& n, const std::string& p) {
                                   return in_range(r, n, p, 0, kMaxObstacleDensity);
@@ -237,11 +244,11 @@ void read_lists(Reader& r, const Fields& f, SweepFile& s) {
 }
 
 SweepFile read_sweep(Reader& r, const YAML::Node& doc) {
-  const Fields f(
-      r, doc, "",
-      {"name", "description", "methods", "classes", "goal_orders", "objects", "densities",
-       "workspace", "footprint_densities", "unknown_fraction", "unknown_shapes", "seeds",
-       "time_limit", "query_limit", "base_seed", "instance", "refused_cells", "role"});
+  const Fields f(r, doc, "",
+                 {"name", "description", "methods", "classes", "goal_orders", "objects",
+                  "densities", "workspace", "footprint_densities", "unknown_fraction",
+                  "unknown_shapes", "seeds", "scatter_moves", "time_limit", "query_limit",
+                  "base_seed", "instance", "refused_cells", "role"});
   SweepFile s;
   s.source = r.source();
   s.name = r.text(f.require("name"), "name");
@@ -351,6 +358,10 @@ std::vector<WorkspaceRule> SweepFile::workspaces() const {
   return out;
 }
 
+std::vector<int> SweepFile::scatter_moves_of(GoalClass c) const {
+  return c == GoalClass::kConstructive ? scatter_moves : std::vector<int>{0};
+}
+
 std::size_t SweepFile::trial_count(
     const std::function<bool(const std::string& method)>& follows_order) const {
   std::size_t per_instance = 0;  // trials per geometry, over its goal orders
@@ -358,7 +369,9 @@ std::size_t SweepFile::trial_count(
     const bool follows = !follows_order || follows_order(method_entry(m).method);
     per_instance += follows ? goal_orders.size() : 1;
   }
-  return classes.size() * objects.size() * std::max<std::size_t>(1, footprints.size()) *
+  std::size_t class_cells = 0;
+  for (const GoalClass c : classes) class_cells += scatter_moves_of(c).size();
+  return class_cells * objects.size() * std::max<std::size_t>(1, footprints.size()) *
          densities.size() * unknown_fractions.size() * round_unknown.size() *
          static_cast<std::size_t>(seeds) * per_instance;
 }

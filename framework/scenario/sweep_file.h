@@ -53,6 +53,9 @@ struct SweepFile {
   // order (the baselines) runs once per instance, in its `any` cell when the list has it.
   std::vector<GoalOrder> goal_orders = {GoalOrder::kChain};
   std::vector<int> objects;
+  // Class constructive's scatter moves K (`scatter_moves`, default [0]: K = 2N), a dimension of
+  // that class's cells only; each value in [0, kMaxScatterMovesPerObject · N] for every N.
+  std::vector<int> scatter_moves = {0};
   std::vector<double> densities;  // target obstacle densities
   WorkspaceRule workspace;
   // The objects' footprint densities, a grid dimension (`footprint_densities`): each a
@@ -69,6 +72,8 @@ struct SweepFile {
   // of the experiment layer) is left out and listed; `error` (the default) stops the sweep.
   bool skip_refused_cells = false;
 
+  // scatter_moves for class constructive, {0} for the others.
+  std::vector<int> scatter_moves_of(GoalClass c) const;
   // The workspace rule of each footprint, in file order, or the one rule.
   std::vector<WorkspaceRule> workspaces() const;
   // Cells × repetitions × methods, a method that ignores the order (follows_order false) counted

@@ -311,5 +311,41 @@ class NominalFootprintTest(unittest.TestCase):
         self.assertIsNone(sweep_data.nominal_footprint(None, "sealed", 4))
 
 
+class KnownSolvableTest(unittest.TestCase):
+    """An instance is solved by the sweep when some method's row of its geometry succeeded (the
+    chain and any-order rows of one instance seed are one geometry), and known solvable when it
+    also carried a witness plan; counted once per instance whatever its rows."""
+
+    def test_counts_per_geometry(self):
+        head = ["method", "class", "objects", "target_density", "instance_seed", "goal_order",
+                "scatter_moves", "witness", "success", "status"]
+        rows = [  # (method, class, seed, order, K, witness, success)
+            ("rearm", "random", "1", "chain", "", "0", "0"),
+            ("rearm", "random", "1", "any", "", "0", "0"),
+            ("birrt", "random", "1", "any", "", "0", "1"),   # seed 1 solved by a baseline
+            ("rearm", "random", "2", "chain", "", "0", "0"),
+            ("birrt", "random", "2", "any", "", "0", "0"),   # seed 2 by nobody
+            ("rearm", "constructive", "1", "chain", "8", "1", "0"),
+            ("birrt", "constructive", "1", "any", "8", "1", "0"),  # witness, unsolved
+            ("rearm", "constructive", "1", "chain", "16", "1", "1"),  # another K: its own
+        ]
+        with tempfile.TemporaryDirectory() as d:
+            with open(os.path.join(d, "trials.csv"), "w") as f:
+                f.write(",".join(head) + "\n")
+                for m, c, seed, order, k, w, ok in rows:
+                    f.write(",".join([m, c, "4", "0.1", seed, order, k, w, ok,
+                                      "completed" if ok == "1" else "timeout"]) + "\n")
+            s = sweep_data.Sweep(d)
+            counts = lambda cls: sweep_data.solvable_counts(
+                s, [x for x in s.trials if x.cls == cls and x.method.startswith("rearm")])
+            self.assertEqual(counts("random"), (1, 1, 2))
+            self.assertEqual(counts("constructive"), (1, 2, 2))
+            path = os.path.join(d, "report.md")
+            sweep_report.write_report(s, path, [])
+            with open(path) as f:
+                text = f.read()
+            self.assertIn("| instances solved by any method | known solvable |", text)
+
+
 if __name__ == "__main__":
     unittest.main()

@@ -107,6 +107,26 @@ TEST(SweepFile, FootprintDensitiesAreAGridDimension) {
                "gives a side of 443.");
 }
 
+// `scatter_moves`: the constructive class's K, a dimension of that class's cells only; each
+// value at most kMaxScatterMovesPerObject times the smallest N (0: K = 2N).
+TEST(SweepFile, ScatterMovesAreADimensionOfTheConstructiveClassOnly) {
+  const std::string head =
+      "name: s\nmethods: [birrt]\nclasses: [random, constructive]\nobjects: [2, 4]\n"
+      "densities: [0.1]\nworkspace: {side: 8}\nseeds: 3\n";
+  const SweepFile one = parse_sweep_file(head);
+  EXPECT_EQ(one.scatter_moves, (std::vector<int>{0}));
+  EXPECT_EQ(one.trial_count(), 3u * 2 * 2);
+  const SweepFile two = parse_sweep_file(head + "scatter_moves: [0, 16]\n");
+  EXPECT_EQ(two.scatter_moves_of(GoalClass::kConstructive), (std::vector<int>{0, 16}));
+  EXPECT_EQ(two.scatter_moves_of(GoalClass::kRandom), (std::vector<int>{0}));
+  EXPECT_EQ(two.trial_count(), 3u * 2 * (1 + 2));
+  EXPECT_EQ(parse_sweep_file(head + "scatter_moves: 5\n").scatter_moves, (std::vector<int>{5}));
+  expect_error(head + "scatter_moves: [0, 17]\n", "scatter_moves[1]", "in [0, 16]");
+  expect_error(head + "scatter_moves: [-1]\n", "scatter_moves[0]", "in [0, 16]");
+  expect_error(head + "scatter_moves: [4, 4]\n", "scatter_moves[1]", "repeated");
+  expect_error(head + "scatter_moves: [two]\n", "scatter_moves[0]", "");
+}
+
 // `goal_orders`: the chain by default; a method that ignores the order is counted once per
 // instance when the caller says which methods follow it.
 TEST(SweepFile, GoalOrdersAreADimensionOfTheOrderFollowingMethods) {
