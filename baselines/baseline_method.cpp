@@ -34,11 +34,13 @@ const char* summary_of(Method m) {
     case Method::kReplan:
       return "B2 on the sensed map, replanning when the sensor reveals an obstacle";
     case Method::kBuffer:
-      return "TRLB-style running-buffer order with lazy buffer spots, full map offline";
+      return "TRLB running-buffer order, lazy spots clear of the goals filled meanwhile";
     case Method::kFmrs:
       return "fmRS: one order from the MCR dependency graph, no backtracking, full map offline";
     case Method::kBirrtFmrs:
       return "BiRRT over arrangements with fmRS as extension primitive, full map offline";
+    case Method::kBufferStrict:
+      return "buffer without TRLB's allocation: spots clear of every goal, never re-parked";
   }
   return "";
 }
@@ -89,7 +91,7 @@ class BaselineMethod final : public experiment::Method {
 
 void register_methods(experiment::MethodRegistry& registry) {
   for (const Method m : {Method::kMrs, Method::kBirrt, Method::kReplan, Method::kBuffer,
-                         Method::kFmrs, Method::kBirrtFmrs}) {
+                         Method::kFmrs, Method::kBirrtFmrs, Method::kBufferStrict}) {
     registry.add(std::make_unique<BaselineMethod>(m));
   }
 }

@@ -15,6 +15,8 @@ namespace rearm::baselines {
 namespace {
 
 constexpr std::uint64_t kSpotStream = 0xB5F;
+// clear_way's `arriving` when no goal object's move is under way (the final transit).
+constexpr std::size_t kNoneArriving = static_cast<std::size_t>(-1);
 
 // A way to keep clear: a disk of `radius` swept along `path`, with `margin`.
 struct Way {
@@ -55,23 +57,31 @@ class BufferPlanner {
   std::optional<std::string> blocked_goal() const;
   bool dfs(ObjectSet at_goal, const Walk& w);
   bool advance(std::size_t i, ObjectSet at_goal, Walk& w);
-  bool park(std::size_t j, Walk& w, const std::vector<Way>& ways = {});
+  bool park(std::size_t j, ObjectSet filled, Walk& w, const std::vector<Way>& ways = {});
+  ObjectSet filled_while_parked(std::size_t j, std::size_t arriving, ObjectSet at_goal) const;
   std::vector<std::size_t> path_blockers(const Walk& w, const Point& from, const Point& to,
                                          double radius, double margin, std::size_t skip,
                                          std::vector<Way>& ways);
   std::vector<std::size_t> objects_meeting(const Walk& w, const Way& way, std::size_t skip) const;
   std::vector<std::size_t> near_blockers(const Walk& w, std::size_t k, const Point& target,
                                          bool grasp, std::vector<Way>& ways) const;
-  bool clear_way(const std::vector<std::size_t>& blockers, ObjectSet at_goal, Walk& w,
-                 const std::vector<Way>& ways);
+  bool clear_way(const std::vector<std::size_t>& blockers, std::size_t arriving, ObjectSet at_goal,
+                 Walk& w, const std::vector<Way>& ways);
   MoveOutcome move_to_goal(std::size_t i, ObjectSet at_goal, Walk& w);
-  std::vector<Point> spots(std::size_t j, const Walk& w, const std::vector<Way>& ways);
-  bool spot_clear(std::size_t j, const Point& q, const Walk& w, bool strict,
+  std::vector<Point> spots(std::size_t j, ObjectSet filled, const Walk& w,
+                           const std::vector<Way>& ways);
+  bool spot_clear(std::size_t j, const Point& q, ObjectSet filled, const Walk& w, bool strict,
                   const std::vector<Way>& ways) const;
   bool finish(Walk w);
   PlanResult result(bool solved);
 
   std::string name(std::size_t local) const { return p_.object_names[objects_[local]]; }
+  // Whether a spot must keep clear of problem object m's goal region (spot_clear).
+  bool must_keep_clear(std::size_t m, ObjectSet filled) const {
+    if (!b_.lifetime_spots) return true;
+    const std::size_t l = local_[m];
+    return l != std::string::npos && l < goal_count_ && (filled & (ObjectSet{1} << l));
+  }
   Point goal(std::size_t local) const { return *p_.goals[objects_[local]]; }
   bool overlap(std::size_t i, const Point& at_i, std::size_t j, const Point& at_j) const;
 
@@ -190,7 +200,7 @@ MoveOutcome BufferPlanner::move_to_goal(std::size_t i, ObjectSet at_goal, Walk& 
     default:
       return m;
   }
-  if (blockers.empty() || !clear_way(blockers, at_goal, w, ways)) return m;
+  if (blockers.empty() || !clear_way(blockers, i, at_goal, w, ways)) return m;
   return planner_.plan(w.a, w.robot, k, goal(i), p_.goal_regions[k], ctx_);
 }
 
@@ -244,18 +254,40 @@ std::vector<std::size_t> BufferPlanner::path_blockers(const Walk& w, const Point
   return objects_meeting(w, ways.back(), skip);
 }
 
-// Parks the blockers (problem indices); false when one cannot be parked: it never moves, or it
-// is a goal object already at its goal.
-bool BufferPlanner::clear_way(const std::vector<std::size_t>& blockers, ObjectSet at_goal, Walk& w,
-                              const std::vector<Way>& ways) {
+// Parks the blockers (problem indices) of goal object `arriving`'s move; false when one cannot
+// be parked: it never moves, it is a goal object already at its goal, or (without
+// lifetime_spots) it is parked already. With lifetime_spots a parked blocker is parked again,
+// off the ways (TRLB: a buffer that a new constraint needs is moved).
+bool BufferPlanner::clear_way(const std::vector<std::size_t>& blockers, std::size_t arriving,
+                              ObjectSet at_goal, Walk& w, const std::vector<Way>& ways) {
   for (const std::size_t k : blockers) {
     const std::size_t j = local_[k];
     if (j == std::string::npos) return false;
     const ObjectSet bj = ObjectSet{1} << j;
-    if ((j < goal_count_ && (at_goal & bj)) || (w.parked & bj)) return false;
-    if (!park(j, w, ways)) return false;
+    if (j < goal_count_ && (at_goal & bj)) return false;
+    if ((w.parked & bj) && !b_.lifetime_spots) return false;
+    if (!park(j, filled_while_parked(j, arriving, at_goal), w, ways)) return false;
   }
   return true;
+}
+
+// The goal objects that arrive while object j (local) waits in a buffer: `arriving` (the move
+// under way), then the order's first choices from there, up to j's own turn (every remaining
+// goal object when j has no goal; none when nothing arrives, kNoneArriving).
+ObjectSet BufferPlanner::filled_while_parked(std::size_t j, std::size_t arriving,
+                                             ObjectSet at_goal) const {
+  const ObjectSet all = all_goals(order_->graph());
+  ObjectSet filled = 0;
+  if (arriving == kNoneArriving) return filled;
+  for (std::size_t next = arriving; next != j;) {
+    filled |= ObjectSet{1} << next;
+    at_goal |= ObjectSet{1} << next;
+    if (at_goal == all) break;
+    const std::vector<std::size_t> c = order_->candidates(at_goal);
+    if (c.empty()) break;
+    next = c.front();
+  }
+  return filled;
 }
 
 // Depth-first over the order's ranking: from the set of arrived objects, each candidate in turn
@@ -283,7 +315,7 @@ bool BufferPlanner::advance(std::size_t i, ObjectSet at_goal, Walk& w) {
   for (const std::size_t j : order_->graph().blockers[i]) {
     const ObjectSet bj = ObjectSet{1} << j;
     if ((at_goal & bj) || (w.parked & bj)) continue;
-    if (!park(j, w)) return false;
+    if (!park(j, filled_while_parked(j, i, at_goal), w)) return false;
   }
   const std::size_t k = objects_[i];
   const MoveOutcome m = move_to_goal(i, at_goal, w);
@@ -300,10 +332,11 @@ bool BufferPlanner::advance(std::size_t i, ObjectSet at_goal, Walk& w) {
 }
 
 // Object j (local) to a buffer spot: the acceptable spots nearest it first, spot_tries of them.
-bool BufferPlanner::park(std::size_t j, Walk& w, const std::vector<Way>& ways) {
+// `filled`: the goal objects that arrive while it is parked (filled_while_parked).
+bool BufferPlanner::park(std::size_t j, ObjectSet filled, Walk& w, const std::vector<Way>& ways) {
   const std::size_t k = objects_[j];
   int tried = 0;
-  for (const Point& q : spots(j, w, ways)) {
+  for (const Point& q : spots(j, filled, w, ways)) {
     if (tried++ == b_.spot_tries) break;
     const MoveOutcome m = planner_.plan(w.a, w.robot, k, q, std::nullopt, ctx_);
     if (m.move) {
@@ -323,10 +356,11 @@ bool BufferPlanner::park(std::size_t j, Walk& w, const std::vector<Way>& ways) {
 }
 
 // Candidate spots for object j, nearest its place first: drawn from the trial's seed and the
-// count of parkings so far (deterministic). Spots that keep the pair disk clear of every goal
-// region and of every other object (TRLB's rule: buffers never block a start or a goal) come
-// first; if none is drawn, spots that keep the object disk clear of them.
-std::vector<Point> BufferPlanner::spots(std::size_t j, const Walk& w,
+// count of parkings so far (deterministic). Spots that keep the pair disk clear of every other
+// object and of the goal regions it must not block (TRLB's rule: with lifetime_spots those of
+// the goal objects in `filled`, which arrive while it is parked; without, every goal region)
+// come first; if none is drawn, spots that keep the object disk clear of them.
+std::vector<Point> BufferPlanner::spots(std::size_t j, ObjectSet filled, const Walk& w,
                                         const std::vector<Way>& ways) {
   Rng rng = Rng::derive(o_.seed, kSpotStream + static_cast<std::uint64_t>(parkings_++));
   const Point lo = planner_.world().lower(), hi = planner_.world().upper();
@@ -338,7 +372,7 @@ std::vector<Point> BufferPlanner::spots(std::size_t j, const Walk& w,
   for (const bool strict : {true, false}) {
     std::vector<Point> out;
     for (const Point& q : drawn) {
-      if (spot_clear(j, q, w, strict, ways)) out.push_back(q);
+      if (spot_clear(j, q, filled, w, strict, ways)) out.push_back(q);
     }
     if (out.empty()) continue;
     std::stable_sort(out.begin(), out.end(), [&](const Point& a, const Point& b) {
@@ -349,8 +383,8 @@ std::vector<Point> BufferPlanner::spots(std::size_t j, const Walk& w,
   return {};
 }
 
-bool BufferPlanner::spot_clear(std::size_t j, const Point& q, const Walk& w, bool strict,
-                               const std::vector<Way>& ways) const {
+bool BufferPlanner::spot_clear(std::size_t j, const Point& q, ObjectSet filled, const Walk& w,
+                               bool strict, const std::vector<Way>& ways) const {
   const std::size_t k = objects_[j];
   if (!planner_.placement_free(w.a, k, q)) return false;
   const double rho = p_.object_radii[k];
@@ -360,7 +394,8 @@ bool BufferPlanner::spot_clear(std::size_t j, const Point& q, const Walk& w, boo
   const double keep = strict ? pair_radius(p_.robot_radius, rho, planner_.params()) : rho;
   for (std::size_t m = 0; m < p_.object_count(); ++m) {
     if (m != k && (q - w.a[m]).norm() < keep + p_.object_radii[m]) return false;
-    if (p_.goal_regions[m] && geometry::signed_distance(*p_.goal_regions[m], q) < keep) {
+    if (p_.goal_regions[m] && must_keep_clear(m, filled) &&
+        geometry::signed_distance(*p_.goal_regions[m], q) < keep) {
       return false;
     }
   }
@@ -377,7 +412,7 @@ bool BufferPlanner::finish(Walk w) {
       std::vector<Way> ways;
       const auto blockers = path_blockers(w, w.robot, *p_.robot_goal, p_.robot_radius,
                                           planner_.params().transit_margin, w.a.size(), ways);
-      if (!blockers.empty() && clear_way(blockers, all, w, ways)) {
+      if (!blockers.empty() && clear_way(blockers, kNoneArriving, all, w, ways)) {
         t = planner_.transit(w.a, w.robot, *p_.robot_goal, ctx_);
       }
     }

@@ -21,6 +21,14 @@ struct BufferOptions {
   // of the acceptable ones (nearest the object first) are tried with a move.
   int spot_samples = 400;
   int spot_tries = 8;
+  // TRLB's allocation (true, method `buffer`): a spot keeps clear of the poses occupied while
+  // the object is parked (every object where it stands) and of the goals filled in that time
+  // (the goal objects the order sends before the parked one, as the order's first choices from
+  // the current set), not of every goal region; and a parked object that closes a way a move
+  // needs is parked again elsewhere (a new constraint), where before the move gave up. false
+  // (method `buffer-strict`, this baseline before TRLB's allocation): every goal region kept
+  // clear, a parked object never moved again.
+  bool lifetime_spots = true;
 };
 
 PlanResult plan_buffer(const RearrangementProblem& problem, const BaselineParams& params,

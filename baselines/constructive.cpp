@@ -381,8 +381,8 @@ ConstructiveInstance constructive_instance(const scenario::InstanceSpec& spec) {
       }
     }
   }
-  throw Error(name_of(spec) + ": in " + std::to_string(kRoomRedraws + 1) + " rooms, no scatter of " +
-              std::to_string(kScatterRedraws + 1) +
+  throw Error(name_of(spec) + ": in " + std::to_string(kRoomRedraws + 1) +
+              " rooms, no scatter of " + std::to_string(kScatterRedraws + 1) +
               " draws found a target for every move and a witness that reverses it (the last: " +
               why + "); use fewer scatter_moves or a lower footprint_density");
 }

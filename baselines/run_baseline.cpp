@@ -36,6 +36,11 @@ PlanResult plan_with(Method m, const RearrangementProblem& p, const BaselineOpti
       return plan_mrs(p, o.params, po);
     case Method::kBuffer:
       return plan_buffer(p, o.params, po, o.buffer);
+    case Method::kBufferStrict: {
+      BufferOptions b = o.buffer;
+      b.lifetime_spots = false;
+      return plan_buffer(p, o.params, po, b);
+    }
     case Method::kFmrs:
       return plan_fmrs(p, o.params, po, o.fmrs);
     case Method::kBirrtFmrs: {
@@ -305,6 +310,8 @@ const char* to_string(Method m) {
       return "fmrs";
     case Method::kBirrtFmrs:
       return "birrt-fmrs";
+    case Method::kBufferStrict:
+      return "buffer-strict";
   }
   return "?";
 }
@@ -316,8 +323,9 @@ Method method_from_string(const std::string& s) {
   if (s == "buffer") return Method::kBuffer;
   if (s == "fmrs") return Method::kFmrs;
   if (s == "birrt-fmrs") return Method::kBirrtFmrs;
+  if (s == "buffer-strict") return Method::kBufferStrict;
   throw Error("unknown baseline method '" + s +
-              "' (expected mrs, birrt, replan, buffer, fmrs or birrt-fmrs)");
+              "' (expected mrs, birrt, replan, buffer, fmrs, birrt-fmrs or buffer-strict)");
 }
 
 BaselineRecord run_baseline(const scenario::Scenario& s, const BaselineOptions& o) {

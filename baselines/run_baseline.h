@@ -23,8 +23,10 @@
 
 namespace rearm::baselines {
 
-enum class Method { kMrs, kBirrt, kReplan, kBuffer, kFmrs, kBirrtFmrs };
-const char* to_string(Method m);  // "mrs", "birrt", "replan", "buffer", "fmrs", "birrt-fmrs"
+// kBufferStrict: the buffer baseline without TRLB's allocation (BufferOptions::lifetime_spots).
+enum class Method { kMrs, kBirrt, kReplan, kBuffer, kFmrs, kBirrtFmrs, kBufferStrict };
+// "mrs", "birrt", "replan", "buffer", "fmrs", "birrt-fmrs", "buffer-strict"
+const char* to_string(Method m);
 Method method_from_string(const std::string& s);  // throws rearm::Error naming the choices
 
 struct BaselineOptions {

@@ -91,10 +91,12 @@ Command add_baseline(CLI::App& program) {
   c->footer(kFooter);
   auto a = std::make_shared<BaselineArgs>();
   add_scenario_file(*c, a->path);
-  c->add_option("--method", a->method,
-                "B1 (mrs), B2 (birrt), B2 replanning (replan), buffer, fmrs or birrt-fmrs")
+  c->add_option(
+       "--method", a->method,
+       "B1 (mrs), B2 (birrt), B2 replanning (replan), buffer, fmrs, birrt-fmrs or buffer-strict")
       ->required()
-      ->check(CLI::IsMember({"mrs", "birrt", "replan", "buffer", "fmrs", "birrt-fmrs"}));
+      ->check(CLI::IsMember(
+          {"mrs", "birrt", "replan", "buffer", "fmrs", "birrt-fmrs", "buffer-strict"}));
   c->add_option("--time-limit", a->options.time_limit, "planning time budget (s, default 10)")
       ->check(finite_check())
       ->check(positive_check())
