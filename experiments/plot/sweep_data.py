@@ -11,7 +11,7 @@ import math
 import os
 import re
 import sys
-from collections import defaultdict
+from collections import Counter, defaultdict
 
 # The two-sided 95% standard normal quantile Phi^-1(0.975) = 1.95996398454005423552..., to 16
 # significant digits; every 95% interval of the scripts (sweep report, figures, ablation table)
@@ -361,6 +361,46 @@ class Sweep:
         return Cell([x for x in self.trials
                      if (cls is None or x.cls == cls) and (method is None or x.method == method)
                      and (n is None or x.n == n) and (density is None or x.density == density)])
+
+
+def sign_test(b, c):
+    """Two-sided exact sign test of b against c discordant pairs: the probability, with each
+    discordant pair a fair coin, of a split at least as uneven as b : c (1 when b + c = 0)."""
+    n = b + c
+    if n == 0:
+        return 1.0
+    tail = sum(math.comb(n, i) for i in range(min(b, c) + 1)) / 2.0 ** n
+    return min(1.0, 2 * tail)
+
+
+def is_rearm(method):
+    """rearm's rows (every variant, either goal order) as the report labels them."""
+    return method.startswith("rearm")
+
+
+def paired(s, rearm, baseline, trials):
+    """(both, only rearm, only the baseline, neither) over the instance geometries of `trials`
+    that both methods ran: a geometry counts as solved by a method when one of its rows
+    succeeded."""
+    ok = defaultdict(dict)
+    for x in trials:
+        if x.method in (rearm, baseline):
+            ok[x.geometry][x.method] = ok[x.geometry].get(x.method, False) or x.success
+    counts = [0, 0, 0, 0]
+    for g in ok.values():
+        if rearm in g and baseline in g:
+            a, b = g[rearm], g[baseline]
+            counts[0 if a and b else 1 if a else 2 if b else 3] += 1
+    return tuple(counts)
+
+
+def best_baseline(trials):
+    """The baseline (not rearm) with the most successful rows in `trials`, ties by name."""
+    wins = Counter()
+    for x in trials:
+        if not is_rearm(x.method):
+            wins[x.method] += x.success
+    return min(wins, key=lambda m: (-wins[m], m)) if wins else None
 
 
 def solvable_counts(s, trials):

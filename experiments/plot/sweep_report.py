@@ -6,7 +6,8 @@ standard library is used.
 import math
 from collections import Counter
 
-from sweep_data import density_bins, density_cells, ordered, pooled, solvable_counts
+from sweep_data import (Cell, best_baseline, density_bins, density_cells, is_rearm, ordered,
+                        paired, pooled, sign_test, solvable_counts)
 
 # The statuses in the order of a trial's life; a status not listed still gets a column, after.
 STATUS_ORDER = ["completed", "infeasible", "stuck", "timeout", "unsolved", "invalid_plan",
@@ -85,7 +86,8 @@ def write_report(s, path, figures):
     else:
         lines += ["## What the numbers say", ""]
         lines += ["- " + line for line in findings(s)] + [""]
-        lines += cell_table(s) + status_table(s) + reason_lines(s) + cost_lines(s)
+        lines += cell_table(s) + footprint_lines(s) + paired_lines(s)
+        lines += status_table(s) + reason_lines(s) + cost_lines(s)
         lines += ["## Figures", ""]
         lines += ["- `%s`: %s" % (name, what) for name, what in figures] + [""]
     with open(path, "w") as f:
@@ -139,6 +141,72 @@ def cell_table(s):
                         iqr_text(c.time), median_text(c.time_all), median_text(c.achieved),
                         median_text(c.actions), median_text(c.path)]
                 lines.append(md_row(row))
+    return lines + [""]
+
+
+# Baselines every paired table names beside the best one, when the sweep ran them.
+PAIRED_BASELINES = ["birrt@10000", "buffer@10000"]
+
+
+def footprint_groups(s):
+    """(footprint, class or "all classes", trials) for a sweep with several footprints."""
+    if len(s.footprints) < 2:
+        return []
+    out = []
+    for f in s.footprints:
+        at = [x for x in s.trials if x.footprint == f]
+        out.append((f, "all classes", at))
+        out += [(f, c, [x for x in at if x.cls == c]) for c in s.classes if len(s.classes) > 1]
+    return out
+
+
+def footprint_lines(s):
+    """Success per footprint, class and method, pooled over N, with the instances known
+    solvable (a witness, or solved by some method of the sweep)."""
+    groups = footprint_groups(s)
+    if not groups:
+        return []
+    head = ["footprint", "class", "method", "trials", "success (95% CI)",
+            "instances solved by any method", "known solvable"]
+    lines = ["## Success per footprint", "",
+             "Pooled over N (and obstacle densities); an instance is one geometry, its chain and "
+             "any-order rows together.", ""] + md_head(head)
+    for f, cls, trials in groups:
+        oracle, known, instances = solvable_counts(s, trials)
+        for m in s.methods:
+            c = Cell([x for x in trials if x.method == m])
+            if c.n:
+                lines.append(md_row([fmt_density(f), cls, m, str(c.n), rate_text(c),
+                                     "%d/%d" % (oracle, instances), "%d/%d" % (known, instances)]))
+    return lines + [""]
+
+
+def paired_lines(s):
+    """Each rearm row set paired by instance against the best baseline of its footprint and
+    class, and against PAIRED_BASELINES, with a two-sided exact sign test."""
+    groups = footprint_groups(s)
+    rearms = [m for m in s.methods if is_rearm(m)]
+    if not groups or not rearms:
+        return []
+    head = ["footprint", "class", "rearm", "baseline", "pairs", "both", "only rearm",
+            "only the baseline", "neither", "sign test p"]
+    lines = ["## rearm paired against the baselines", "",
+             "Per instance: solved by both, by rearm only, by the baseline only, by neither; the "
+             "best baseline is the one with the most successes at that footprint and class; p: "
+             "two-sided exact sign test on the pairs only one solved.", ""] + md_head(head)
+    for f, cls, trials in groups:
+        best = best_baseline(trials)
+        others = [b for b in PAIRED_BASELINES if b != best and b in s.methods]
+        for r in rearms:
+            for b in ([best] if best else []) + others:
+                both, only_r, only_b, neither = paired(s, r, b, trials)
+                if both + only_r + only_b + neither == 0:
+                    continue
+                name = b + (" (best)" if b == best else "")
+                lines.append(md_row([fmt_density(f), cls, r, name,
+                                     str(both + only_r + only_b + neither), str(both),
+                                     str(only_r), str(only_b), str(neither),
+                                     "%.3g" % sign_test(only_r, only_b)]))
     return lines + [""]
 
 

@@ -347,5 +347,57 @@ class KnownSolvableTest(unittest.TestCase):
             self.assertIn("| instances solved by any method | known solvable |", text)
 
 
+class PairedTest(unittest.TestCase):
+    """The sign test against enumeration of every coin sequence; the paired counts by instance
+    (a rearm row set against a baseline, chain and any rows of one instance one geometry)."""
+
+    def test_sign_test_is_the_enumerated_two_sided_probability(self):
+        for n in range(0, 11):
+            for b in range(n + 1):
+                c = n - b
+                extreme = abs(b - c)
+                hits = sum(1 for seq in range(2 ** n)
+                           if abs(2 * bin(seq).count("1") - n) >= extreme)
+                self.assertAlmostEqual(sweep_data.sign_test(b, c), hits / 2 ** n, places=12,
+                                       msg="%d:%d" % (b, c))
+
+    def test_counts_and_best_baseline(self):
+        head = ["method", "class", "objects", "target_density", "instance_seed", "goal_order",
+                "success", "status", "workspace_rule"]
+        rows = [  # (method, seed, order, success, footprint)
+            ("rearm", "1", "chain", "1", "0.05"), ("birrt", "1", "any", "1", "0.05"),
+            ("mrs", "1", "any", "0", "0.05"),
+            ("rearm", "2", "chain", "1", "0.05"), ("birrt", "2", "any", "0", "0.05"),
+            ("mrs", "2", "any", "0", "0.05"),
+            ("rearm", "3", "chain", "0", "0.05"), ("birrt", "3", "any", "1", "0.05"),
+            ("mrs", "3", "any", "1", "0.05"),
+            ("rearm", "4", "chain", "0", "0.05"), ("birrt", "4", "any", "0", "0.05"),
+            ("mrs", "4", "any", "0", "0.05"),
+            ("rearm", "5", "chain", "1", "0.08"),  # no baseline row: not paired
+            ("birrt", "6", "any", "1", "0.08"), ("rearm", "6", "chain", "0", "0.08"),
+        ]
+        with tempfile.TemporaryDirectory() as d:
+            with open(os.path.join(d, "trials.csv"), "w") as f:
+                f.write(",".join(head) + "\n")
+                for m, seed, order, ok, fp in rows:
+                    f.write(",".join([m, "random", "4", "0.05", seed, order, ok,
+                                      "completed" if ok == "1" else "timeout",
+                                      "footprint " + fp]) + "\n")
+            s = sweep_data.Sweep(d)
+            rearm = "rearm (bound to the chain's order; baselines free)"
+            at = lambda fp: [x for x in s.trials if x.footprint == fp]
+            self.assertEqual(sweep_data.paired(s, rearm, "birrt", at(0.05)), (1, 1, 1, 1))
+            self.assertEqual(sweep_data.paired(s, rearm, "mrs", at(0.05)), (0, 2, 1, 1))
+            self.assertEqual(sweep_data.paired(s, rearm, "birrt", at(0.08)), (0, 0, 1, 0))
+            self.assertEqual(sweep_data.best_baseline(at(0.05)), "birrt")
+            path = os.path.join(d, "report.md")
+            sweep_report.write_report(s, path, [])
+            with open(path) as f:
+                text = f.read()
+            self.assertIn("| 0.05 | all classes | %s | birrt (best) | 4 | 1 | 1 | 1 | 1 | 1 |"
+                          % rearm, text)
+            self.assertIn("| 0.05 | all classes | mrs | 4 | 1/4 = 0.25", text)
+
+
 if __name__ == "__main__":
     unittest.main()
