@@ -4,8 +4,9 @@
 // with no buffer; a two-cycle and Fig. 5's
 // three-cycle each solved with exactly one buffer; Fig. 3's passage cleared of a goal-less
 // object; a goal inside a fixed obstacle reported
-// infeasible, never solved; the same plan for the same seed, also in parallel threads. Every
-// plan passes the independent validator (validator.h).
+// infeasible, never solved; a buffer spot in a goal region that fills only after it is vacated
+// (TRLB's allocation; the strict rule finds none); the same plan for the same seed, also in
+// parallel threads. Every plan passes the independent validator (validator.h).
 #include "baselines/buffer.h"
 
 #include <gtest/gtest.h>
@@ -16,6 +17,7 @@
 
 #include "baselines/buffer_order.h"
 #include "core/rng.h"
+#include "geometry/distance.h"
 #include "scenario/scenario_io.h"
 #include "support/plan_checks.h"
 
@@ -133,6 +135,42 @@ TEST(Buffer, ATwoCycleTakesExactlyOneBuffer) {
   test_support::expect_valid_plan(p, r);
   EXPECT_EQ(buffer_moves(p, r.plan), 1);
   EXPECT_EQ(r.plan.moves.size(), 3u);  // one to a buffer, two to their goals
+}
+
+// TRLB's allocation (BufferOptions::lifetime_spots): a swap of M1 and M2 in a 9 x 3 m room whose
+// floor three goal regions tile (lB | lA | lC, M3 already inside lC). One of the two must wait in
+// a buffer while the other arrives. Every point of the floor lies in some goal region, so a rule
+// that keeps spots clear of every goal region finds none (buffer-strict: unsolved); a spot needs
+// to keep clear only of the goal filled while it is used (lA, when M2 waits for M1) and of the
+// objects, so lC or M2's own lB serve.
+TEST(Buffer, ASpotKeepsClearOnlyOfTheGoalsFilledWhileItIsUsed) {
+  const scenario::Scenario s = scenario::parse_scenario(R"yaml(
+name: tiled
+workspace: [[0, 0], [9, 0], [9, 3], [0, 3]]
+robot: {radius: 0.2, start: [6.5, 0.6], heading: 0}
+regions:
+  - {name: lB, polygon: [[0, 0], [2.75, 0], [2.75, 3], [0, 3]]}
+  - {name: lA, polygon: [[2.75, 0], [5, 0], [5, 3], [2.75, 3]]}
+  - {name: lC, polygon: [[5, 0], [9, 0], [9, 3], [5, 3]]}
+objects:
+  - {name: M1, center: [1.5, 1.5], radius: 0.25}
+  - {name: M2, center: [3.9, 1.5], radius: 0.25}
+  - {name: M3, center: [7.5, 2.2], radius: 0.25}
+task: "<>release(M1,lA) && <>release(M2,lB) && <>release(M3,lC)"
+)yaml");
+  const auto p = problem_from_scenario(s);
+  BufferOptions strict;
+  strict.lifetime_spots = false;
+  const PlanResult no = plan_buffer(p, {}, options(1), strict);
+  EXPECT_NE(no.status, PlanStatus::kSolved);
+  EXPECT_NE(no.reason.find("no buffer spot"), std::string::npos) << no.reason;
+  const PlanResult r = plan_buffer(p, {}, options(1));
+  test_support::expect_valid_plan(p, r);
+  ASSERT_EQ(buffer_moves(p, r.plan), 1);
+  const ObjectMove& parked = r.plan.moves.front();
+  EXPECT_EQ(parked.object, 1u);  // M2 (M1's goal point is under it) waits
+  EXPECT_FALSE(geometry::contains(*p.goal_regions[0], parked.to)) << parked.to.transpose();
+  EXPECT_GE(geometry::signed_distance(*p.goal_regions[0], parked.to), 0.25);  // ρ clear of lA
 }
 
 TEST(Buffer, Fig5ThreeCycleTakesExactlyOneBuffer) {
