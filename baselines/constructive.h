@@ -51,7 +51,7 @@ inline constexpr int kScatterRedraws = 6;
 // Rooms drawn again (generate_room with a seed derived from the spec's) before the spec is
 // refused: a room where the pair's release approach fits no goal with the others in theirs
 // admits no rearrangement of the baselines' kind.
-inline constexpr int kRoomRedraws = 3;
+inline constexpr int kRoomRedraws = 9;
 // RRTConnect iterations per motion query while scattering and planning the witness.
 inline constexpr int kScatterIterations = 5000;
 
