@@ -191,18 +191,20 @@ class Scatter {
   }
 
   // The move that undoes m in arrangement a (its object at m.to), the robot at `robot` (nullopt:
-  // no transit), back to exactly m.from.
+  // no transit), aimed at m.from; with `tolerance`, refused when it lands farther from m.from.
   std::optional<MoveOutcome> back(const MovePlanner& with, const Arrangement& a,
-                                  std::optional<Point> robot, const ScatterMove& m) {
+                                  std::optional<Point> robot, const ScatterMove& m,
+                                  std::optional<double> tolerance = std::nullopt) {
     MoveOutcome o = with.plan(a, robot, m.object, m.from, region(m), ctx_);
-    if (o.move && (&with != &checker_ || (o.move->to - m.from).norm() <= kLandingTolerance))
-      return o;
-    if (o.move) {
+    if (!o.move) {
+      last_ = to_string(o.failure);
+      return std::nullopt;
+    }
+    if (tolerance && (o.move->to - m.from).norm() > *tolerance) {
       last_ = "landing off its target";
       return std::nullopt;
     }
-    last_ = to_string(o.failure);
-    return std::nullopt;
+    return o;
   }
 
   // True when object i fits at q, clear of the others in `out` (checker's margins), and some
@@ -302,7 +304,7 @@ class Scatter {
       const ScatterMove m{o, a[o], b, first};
       Arrangement after = a;
       after[o] = b;
-      if (back(checker_, after, std::nullopt, m)) return m;
+      if (back(checker_, after, std::nullopt, m, kLandingTolerance)) return m;
     }
     return std::nullopt;
   }

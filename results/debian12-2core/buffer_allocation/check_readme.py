@@ -5,11 +5,13 @@ BiRRT@10000 on the same instances, from ../crowded/trials.csv (standard library 
 run: python3 results/debian12-2core/buffer_allocation/check_readme.py
 """
 import csv
-import math
 import os
+import sys
 from collections import defaultdict
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "..", "..", "experiments", "plot"))
+from sweep_data import sign_test  # noqa: E402  (the report's own test, checked by tests/plot)
 FOOTPRINT = "footprint 0.08"
 
 
@@ -21,13 +23,6 @@ def rows(path):
 def solved(rs, method):
     """instance -> success of the method's row."""
     return {r["instance"]: r["success"] == "1" for r in rs if r["method"] == method}
-
-
-def sign_test(b, c):
-    n = b + c
-    if n == 0:
-        return 1.0
-    return min(1.0, 2 * sum(math.comb(n, i) for i in range(min(b, c) + 1)) / 2.0 ** n)
 
 
 def paired(a, b):
